@@ -1,0 +1,69 @@
+#pragma once
+// A case as read from its YAML file: the model it builds, the analysis steps to run in order, and
+// the summary quantities it declares. Everything is in the case's consistent unit system.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "libstruct/model/model.hpp"
+#include "libstruct/solve/solver_options.hpp"
+
+namespace flexmoor::app {
+
+// A consistent unit system: US = ft, slug, s, lbf; SI = m, kg, s, N.
+enum class UnitSystem { SI, US };
+
+struct UnitNames {
+  std::string length, mass, time, force, pressure;
+};
+UnitNames unitNames(UnitSystem system);  // {"ft","slug","s","lbf","lbf/ft^2"} or {"m","kg","s","N","Pa"}
+
+struct SourceLocation {
+  std::string file;
+  int line = 0;  // 1-based
+};
+
+struct StepSpec {
+  enum class Kind { Relax, Static };
+  Kind kind = Kind::Static;
+  std::string name;  // "relax", "static", or the step's own `name:`
+  solve::RelaxationOptions relax;
+  solve::StaticOptions statics;
+  SourceLocation where;
+};
+
+// A scalar the case promises in summary.json.
+struct SummarySpec {
+  enum class Quantity {
+    Displacement,       // component of a node's displacement
+    Position,           // component of a node's current position
+    Reaction,           // component of a support reaction
+    ReactionMagnitude,  // |reaction| at a node
+    EndTension,         // axial force at one end of an element
+    MaxTension,         // largest axial force over all integration points and element ends
+  };
+  std::string name;
+  Quantity quantity = Quantity::Displacement;
+  int node = -1;       // 0-based model node
+  int element = -1;    // 0-based model element
+  int end = 0;         // 0 = first node of the element, 1 = last
+  int component = 0;   // 0, 1, 2 = x, y, z
+  double scale = 1.0;  // e.g. -1 to report a sag as positive
+  int step = -1;       // 0-based step index; -1 = the last step
+  std::string unit;    // unit name in the case's system ("ft", "lbf")
+  SourceLocation where;
+};
+
+struct Case {
+  std::string name;   // `name:` in the file, or the file's stem
+  std::string title;  // optional one-line description
+  std::string file;   // path it was read from
+  UnitSystem units = UnitSystem::SI;
+  std::unique_ptr<model::Model> model;  // equations already numbered
+  std::vector<StepSpec> steps;
+  std::vector<SummarySpec> summary;
+  std::map<std::string, std::vector<int>> node_sets;  // named sets, 0-based nodes
+};
+
+}  // namespace flexmoor::app

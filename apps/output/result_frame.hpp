@@ -1,0 +1,20 @@
+#pragma once
+// One solved state as the writers see it: the state, its element results and support reactions,
+// labelled with the step it closes.
+#include <string>
+#include <vector>
+
+#include "libstruct/element/element.hpp"
+#include "libstruct/model/state.hpp"
+
+namespace flexmoor::app {
+
+struct ResultFrame {
+  int step_index = 0;          // 0-based index of the analysis step in the case
+  std::string step_name;       // "relax", "static", ...
+  const model::State* state = nullptr;
+  std::vector<element::ElementResult> elements;
+  model::NodalField reactions;  // 3 x nodes; zero at free dofs
+};
+
+}  // namespace flexmoor::app

@@ -1,0 +1,175 @@
+#include "libstruct/element/cable_element.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "libstruct/shape/gauss_legendre.hpp"
+#include "libstruct/shape/lagrange_1d.hpp"
+
+namespace flexmoor::element {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+template <int N>
+CableElement<N>::CableElement(std::vector<int> nodes, CableSection section, int quadrature_points)
+    : Element(std::move(nodes)),
+      section_(std::move(section)),
+      quadrature_points_(quadrature_points > 0 ? quadrature_points : N) {
+  if (static_cast<int>(this->nodes().size()) != N)
+    throw std::invalid_argument("cable element node count does not match its order");
+}
+
+template <int N>
+std::string CableElement<N>::typeName() const {
+  return "cable" + std::to_string(N);
+}
+
+template <int N>
+void CableElement<N>::gather(const ElementContext& c, Coordinates& X, Coordinates& Y) const {
+  for (int I = 0; I < N; ++I) {
+    const int n = nodes()[I];
+    X.col(I) = c.reference.col(n);
+    Y.col(I) = X.col(I) + c.state.displacement.col(n);
+  }
+}
+
+template <int N>
+void CableElement<N>::internalForce(const ElementContext& c, Eigen::VectorXd& f,
+                                    Eigen::MatrixXd* K) const {
+  using L = shape::Lagrange1D<N>;
+  Coordinates X, Y;
+  gather(c, X, Y);
+  f.setZero(3 * N);
+  if (K) K->setZero(3 * N, 3 * N);
+  const auto& rule = shape::gaussLegendre(quadrature_points_);
+  for (int q = 0; q < rule.size(); ++q) {
+    const typename L::Vector dL = L::derivatives(rule.points[q]);
+    const Vector3d x1 = X * dL;  // x,1
+    const Vector3d y1 = Y * dL;  // y,1
+    const double a11 = x1.squaredNorm();
+    const double A11 = y1.squaredNorm();
+    const material::CableStress s = section_.material->stress(a11, A11);
+    const double dV = section_.area * std::sqrt(a11) * rule.weights[q];
+    // Eq. 3.29 / 4.42: F^I_i = int T^11 L^I,1 y_i,1 A0 sqrt(a11) dxi
+    for (int I = 0; I < N; ++I) f.template segment<3>(3 * I) += (s.T11 * dL(I) * dV) * y1;
+    if (!K) continue;
+    // Eq. 4.48: geometric part T^11 L^I,1 L^J,1 delta_ij, material part C^1111 (L^I,1 y,1)(L^J,1 y,1)
+    const Matrix3d material_part = s.C1111 * dV * (y1 * y1.transpose());
+    for (int I = 0; I < N; ++I)
+      for (int J = 0; J < N; ++J) {
+        auto block = K->template block<3, 3>(3 * I, 3 * J);
+        block += dL(I) * dL(J) * material_part;
+        block.diagonal().array() += s.T11 * dL(I) * dL(J) * dV;
+      }
+  }
+}
+
+template <int N>
+void CableElement<N>::mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const {
+  using L = shape::Lagrange1D<N>;
+  Coordinates X, Y;
+  gather(c, X, Y);
+  Eigen::Matrix<double, N, N> m = Eigen::Matrix<double, N, N>::Zero();
+  const auto& rule = shape::gaussLegendre(quadrature_points_);
+  for (int q = 0; q < rule.size(); ++q) {
+    const typename L::Vector Lv = L::values(rule.points[q]);
+    const double ds0 = (X * L::derivatives(rule.points[q])).norm() * rule.weights[q];
+    m += (section_.density * section_.area * ds0) * (Lv * Lv.transpose());  // Eq. 4.49
+  }
+  if (kind == MassKind::Lumped) {
+    // Row-sum lumping would give negative masses at the corners of higher orders; the diagonal
+    // is scaled to keep the total mass instead (HRZ lumping).
+    const double total = m.sum();
+    const double diagonal = m.diagonal().sum();
+    m = (m.diagonal() * (total / diagonal)).asDiagonal();
+  }
+  M.setZero(3 * N, 3 * N);
+  for (int I = 0; I < N; ++I)
+    for (int J = 0; J < N; ++J) M.block<3, 3>(3 * I, 3 * J).diagonal().setConstant(m(I, J));
+}
+
+template <int N>
+void CableElement<N>::bodyLoad(const ElementContext& c, const Vector3d& g,
+                               Eigen::VectorXd& p) const {
+  using L = shape::Lagrange1D<N>;
+  Coordinates X, Y;
+  gather(c, X, Y);
+  p.setZero(3 * N);
+  const auto& rule = shape::gaussLegendre(quadrature_points_);
+  for (int q = 0; q < rule.size(); ++q) {
+    const typename L::Vector Lv = L::values(rule.points[q]);
+    const double ds0 = (X * L::derivatives(rule.points[q])).norm() * rule.weights[q];
+    for (int I = 0; I < N; ++I)
+      p.template segment<3>(3 * I) += (section_.density * section_.area * Lv(I) * ds0) * g;
+  }
+}
+
+template <int N>
+void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& load,
+                               Eigen::VectorXd& p) const {
+  using L = shape::Lagrange1D<N>;
+  Coordinates X, Y;
+  gather(c, X, Y);
+  Eigen::Matrix<double, 3, N> V, A;
+  for (int I = 0; I < N; ++I) {
+    V.col(I) = c.state.velocity.col(nodes()[I]);
+    A.col(I) = c.state.acceleration.col(nodes()[I]);
+  }
+  p.setZero(3 * N);
+  const auto& rule = shape::gaussLegendre(quadrature_points_);
+  for (int q = 0; q < rule.size(); ++q) {
+    const double xi = rule.points[q];
+    const typename L::Vector Lv = L::values(xi);
+    const typename L::Vector dL = L::derivatives(xi);
+    const Vector3d y1 = Y * dL;
+    model::LinePoint point;
+    point.position = Y * Lv;
+    point.velocity = V * Lv;
+    point.acceleration = A * Lv;
+    point.tangent = y1.normalized();
+    point.stretch = y1.norm() / (X * dL).norm();
+    point.time = c.state.time;
+    point.element = c.index;
+    // Eq. E.1, E.12: load per current length times the current length element |y,1| dxi
+    const Vector3d q_force = load.forcePerLength(point) * (y1.norm() * rule.weights[q]);
+    for (int I = 0; I < N; ++I) p.template segment<3>(3 * I) += Lv(I) * q_force;
+  }
+}
+
+template <int N>
+double CableElement<N>::axialForce(const Coordinates& X, const Coordinates& Y, double xi) const {
+  const typename shape::Lagrange1D<N>::Vector dL = shape::Lagrange1D<N>::derivatives(xi);
+  return section_.material->tension((X * dL).squaredNorm(), (Y * dL).squaredNorm(),
+                                    section_.area);
+}
+
+template <int N>
+ElementResult CableElement<N>::result(const ElementContext& c) const {
+  Coordinates X, Y;
+  gather(c, X, Y);
+  ElementResult r;
+  const auto& rule = shape::gaussLegendre(quadrature_points_);
+  for (int q = 0; q < rule.size(); ++q) r.point_tension.push_back(axialForce(X, Y, rule.points[q]));
+  r.end_tension[0] = axialForce(X, Y, -1.0);
+  r.end_tension[1] = axialForce(X, Y, 1.0);
+  return r;
+}
+
+template class CableElement<2>;
+template class CableElement<3>;
+template class CableElement<4>;
+
+std::unique_ptr<Element> makeCableElement(std::vector<int> nodes, CableSection section,
+                                          int quadrature_points) {
+  switch (nodes.size()) {
+    case 2: return std::make_unique<CableElement<2>>(std::move(nodes), std::move(section), quadrature_points);
+    case 3: return std::make_unique<CableElement<3>>(std::move(nodes), std::move(section), quadrature_points);
+    case 4: return std::make_unique<CableElement<4>>(std::move(nodes), std::move(section), quadrature_points);
+    default:
+      throw std::invalid_argument("a cable element has 2, 3 or 4 nodes (got " +
+                                  std::to_string(nodes.size()) + ")");
+  }
+}
+
+}  // namespace flexmoor::element

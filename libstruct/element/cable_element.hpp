@@ -1,0 +1,49 @@
+#pragma once
+// Curved isoparametric cable element with N = 2, 3 or 4 nodes, total Lagrangian, Green strain in
+// convected coordinates (Eq. 2.43-2.55, 3.19-3.29, 4.42-4.49). One kernel for every node count.
+#include <memory>
+
+#include "libstruct/element/element.hpp"
+#include "libstruct/material/cable_material.hpp"
+
+namespace flexmoor::element {
+
+struct CableSection {
+  double area = 0.0;     // A0, reference cross-section
+  double density = 0.0;  // rho0, mass per unit reference volume
+  std::shared_ptr<const material::CableMaterial> material;
+};
+
+template <int N>
+class CableElement final : public Element {
+ public:
+  // quadrature_points: Gauss-Legendre order; 0 means N (full integration of the mass matrix of a
+  // straight element).
+  CableElement(std::vector<int> nodes, CableSection section, int quadrature_points = 0);
+
+  std::string typeName() const override;
+  void internalForce(const ElementContext& c, Eigen::VectorXd& f,
+                     Eigen::MatrixXd* K) const override;
+  void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
+  void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
+                Eigen::VectorXd& p) const override;
+  void lineLoad(const ElementContext& c, const model::LineLoad& load,
+                Eigen::VectorXd& p) const override;
+  ElementResult result(const ElementContext& c) const override;
+
+  const CableSection& section() const { return section_; }
+
+ private:
+  using Coordinates = Eigen::Matrix<double, 3, N>;
+  void gather(const ElementContext& c, Coordinates& X, Coordinates& Y) const;
+  double axialForce(const Coordinates& X, const Coordinates& Y, double xi) const;
+
+  CableSection section_;
+  int quadrature_points_;
+};
+
+// Builds the element of the right node count (2, 3 or 4 nodes).
+std::unique_ptr<Element> makeCableElement(std::vector<int> nodes, CableSection section,
+                                          int quadrature_points = 0);
+
+}  // namespace flexmoor::element

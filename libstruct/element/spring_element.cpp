@@ -1,0 +1,80 @@
+#include "libstruct/element/spring_element.hpp"
+
+namespace flexmoor::element {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+SpringElement::SpringElement(int node_a, int node_b, double stiffness, double rest_length,
+                             material::Compression compression)
+    : Element({node_a, node_b}),
+      stiffness_(stiffness),
+      rest_length_(rest_length),
+      compression_(compression) {}
+
+double SpringElement::restLength(const ElementContext& c) const {
+  if (rest_length_ >= 0.0) return rest_length_;
+  return (c.reference.col(nodes()[1]) - c.reference.col(nodes()[0])).norm();
+}
+
+void SpringElement::internalForce(const ElementContext& c, Eigen::VectorXd& f,
+                                  Eigen::MatrixXd* K) const {
+  const Vector3d ya = c.reference.col(nodes()[0]) + c.state.displacement.col(nodes()[0]);
+  const Vector3d yb = c.reference.col(nodes()[1]) + c.state.displacement.col(nodes()[1]);
+  const Vector3d d = yb - ya;
+  const double l = d.norm();
+  const Vector3d e = d / l;
+  double force = stiffness_ * (l - restLength(c));
+  const bool slack = compression_ == material::Compression::TensionOnly && force < 0.0;
+  if (slack) force = 0.0;
+  f.resize(6);
+  f.head<3>() = -force * e;
+  f.tail<3>() = force * e;
+  if (!K) return;
+  const Matrix3d ee = e * e.transpose();
+  const Matrix3d k = (slack ? 0.0 : stiffness_) * ee + (force / l) * (Matrix3d::Identity() - ee);
+  K->resize(6, 6);
+  K->topLeftCorner<3, 3>() = k;
+  K->bottomRightCorner<3, 3>() = k;
+  K->topRightCorner<3, 3>() = -k;
+  K->bottomLeftCorner<3, 3>() = -k;
+}
+
+void SpringElement::mass(const ElementContext&, MassKind, Eigen::MatrixXd& M) const {
+  M.setZero(6, 6);
+}
+
+void SpringElement::bodyLoad(const ElementContext&, const Vector3d&, Eigen::VectorXd& p) const {
+  p.setZero(6);
+}
+
+ElementResult SpringElement::result(const ElementContext& c) const {
+  Eigen::VectorXd f;
+  internalForce(c, f, nullptr);
+  ElementResult r;
+  const Vector3d chord = c.reference.col(nodes()[1]) + c.state.displacement.col(nodes()[1]) -
+                         c.reference.col(nodes()[0]) - c.state.displacement.col(nodes()[0]);
+  const double force = f.tail<3>().dot(chord.normalized());
+  r.point_tension = {force};
+  r.end_tension[0] = r.end_tension[1] = force;
+  return r;
+}
+
+PointMassElement::PointMassElement(int node, double mass) : Element({node}), mass_(mass) {}
+
+void PointMassElement::internalForce(const ElementContext&, Eigen::VectorXd& f,
+                                     Eigen::MatrixXd* K) const {
+  f.setZero(3);
+  if (K) K->setZero(3, 3);
+}
+
+void PointMassElement::mass(const ElementContext&, MassKind, Eigen::MatrixXd& M) const {
+  M = mass_ * Eigen::MatrixXd::Identity(3, 3);
+}
+
+void PointMassElement::bodyLoad(const ElementContext&, const Vector3d& g,
+                                Eigen::VectorXd& p) const {
+  p = mass_ * g;
+}
+
+}  // namespace flexmoor::element

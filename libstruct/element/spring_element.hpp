@@ -1,0 +1,46 @@
+#pragma once
+// Two-node axial spring: N = k (l - l0) along the current chord e = (y2 - y1) / l.
+// Tangent: k e e^T + (N / l)(I - e e^T). Massless.
+#include "libstruct/element/element.hpp"
+#include "libstruct/material/cable_material.hpp"
+
+namespace flexmoor::element {
+
+class SpringElement final : public Element {
+ public:
+  // rest_length < 0 takes the distance of the two nodes in the reference configuration.
+  SpringElement(int node_a, int node_b, double stiffness, double rest_length,
+                material::Compression compression);
+
+  std::string typeName() const override { return "spring"; }
+  void internalForce(const ElementContext& c, Eigen::VectorXd& f,
+                     Eigen::MatrixXd* K) const override;
+  void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
+  void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
+                Eigen::VectorXd& p) const override;
+  ElementResult result(const ElementContext& c) const override;
+
+ private:
+  double restLength(const ElementContext& c) const;
+  double stiffness_, rest_length_;
+  material::Compression compression_;
+};
+
+// A concentrated mass at one node (a buoy, a clump weight): mass m I and weight m g.
+class PointMassElement final : public Element {
+ public:
+  PointMassElement(int node, double mass);
+
+  std::string typeName() const override { return "point_mass"; }
+  void internalForce(const ElementContext& c, Eigen::VectorXd& f,
+                     Eigen::MatrixXd* K) const override;
+  void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
+  void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
+                Eigen::VectorXd& p) const override;
+  ElementResult result(const ElementContext&) const override { return {}; }
+
+ private:
+  double mass_;
+};
+
+}  // namespace flexmoor::element

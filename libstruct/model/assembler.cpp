@@ -1,0 +1,134 @@
+#include "libstruct/model/assembler.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace flexmoor::model {
+
+Assembler::Assembler(const Model& model) : model_(model) {
+  const int n_eq = model.equationCount();
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < n_eq; ++i) entries.emplace_back(i, i, 0.0);
+  full_index_.resize(model.elementCount());
+  std::vector<std::vector<int>> equations(model.elementCount());
+  for (int e = 0; e < model.elementCount(); ++e) {
+    const auto& nodes = model.element(e).nodes();
+    for (int n : nodes)
+      for (int k = 0; k < 3; ++k) {
+        full_index_[e].push_back(3 * n + k);
+        equations[e].push_back(model.equation(n, k));
+      }
+    for (int a : equations[e])
+      for (int b : equations[e])
+        if (a >= 0 && b >= 0) entries.emplace_back(a, b, 0.0);
+  }
+  pattern_.resize(n_eq, n_eq);
+  pattern_.setFromTriplets(entries.begin(), entries.end());
+  pattern_.makeCompressed();
+
+  slot_.resize(model.elementCount());
+  const int* outer = pattern_.outerIndexPtr();
+  const int* inner = pattern_.innerIndexPtr();
+  for (int e = 0; e < model.elementCount(); ++e) {
+    const auto& eq = equations[e];
+    const int m = static_cast<int>(eq.size());
+    slot_[e].assign(m * m, -1);
+    for (int b = 0; b < m; ++b) {
+      if (eq[b] < 0) continue;
+      for (int a = 0; a < m; ++a) {
+        if (eq[a] < 0) continue;
+        const int* begin = inner + outer[eq[b]];
+        const int* end = inner + outer[eq[b] + 1];
+        slot_[e][a + m * b] = static_cast<int>(std::lower_bound(begin, end, eq[a]) - inner);
+      }
+    }
+  }
+}
+
+template <class ElementMatrix>
+void Assembler::scatterMatrix(int e, const ElementMatrix& k, SparseMatrix& K) const {
+  double* values = K.valuePtr();
+  const auto& slots = slot_[e];
+  const int m = static_cast<int>(k.rows());
+  for (int b = 0; b < m; ++b)
+    for (int a = 0; a < m; ++a) {
+      const int s = slots[a + m * b];
+      if (s >= 0) values[s] += k(a, b);
+    }
+}
+
+void Assembler::internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const {
+  force.setZero(3 * model_.nodeCount());
+  if (K) {
+    *K = pattern_;
+    K->coeffs().setZero();
+  }
+  Eigen::VectorXd f;
+  Eigen::MatrixXd k;
+  for (int e = 0; e < model_.elementCount(); ++e) {
+    model_.element(e).internalForce(context(state, e), f, K ? &k : nullptr);
+    const auto& index = full_index_[e];
+    for (size_t a = 0; a < index.size(); ++a) force(index[a]) += f(a);
+    if (K) scatterMatrix(e, k, *K);
+  }
+}
+
+void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
+  load.setZero(3 * model_.nodeCount());
+  for (const NodalLoad& p : model_.nodalLoads()) load.segment<3>(3 * p.node) += p.force;
+  const bool gravity = !model_.gravity().isZero();
+  Eigen::VectorXd p;
+  for (int e = 0; e < model_.elementCount(); ++e) {
+    const auto& index = full_index_[e];
+    if (gravity) {
+      model_.element(e).bodyLoad(context(state, e), model_.gravity(), p);
+      for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
+    }
+    for (const auto& line : model_.lineLoads()) {
+      model_.element(e).lineLoad(context(state, e), *line, p);
+      for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
+    }
+  }
+  load *= state.load_factor;
+}
+
+void Assembler::mass(const State& state, element::MassKind kind, SparseMatrix& M) const {
+  M = pattern_;
+  M.coeffs().setZero();
+  Eigen::MatrixXd m;
+  for (int e = 0; e < model_.elementCount(); ++e) {
+    model_.element(e).mass(context(state, e), kind, m);
+    scatterMatrix(e, m, M);
+  }
+}
+
+Eigen::VectorXd Assembler::restrictToFree(const Eigen::VectorXd& full) const {
+  Eigen::VectorXd r(model_.equationCount());
+  for (int n = 0; n < model_.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k)
+      if (const int eq = model_.equation(n, k); eq >= 0) r(eq) = full(3 * n + k);
+  return r;
+}
+
+void Assembler::addFree(const Eigen::VectorXd& free_values, NodalField& field) const {
+  for (int n = 0; n < model_.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k)
+      if (const int eq = model_.equation(n, k); eq >= 0) field(k, n) += free_values(eq);
+}
+
+void Assembler::applyPrescribed(State& state) const {
+  for (int n = 0; n < model_.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k)
+      if (model_.isConstrained(n, k))
+        state.displacement(k, n) = state.load_factor * model_.prescribed(n, k);
+}
+
+std::vector<element::ElementResult> Assembler::elementResults(const State& state) const {
+  std::vector<element::ElementResult> results;
+  results.reserve(model_.elementCount());
+  for (int e = 0; e < model_.elementCount(); ++e)
+    results.push_back(model_.element(e).result(context(state, e)));
+  return results;
+}
+
+}  // namespace flexmoor::model

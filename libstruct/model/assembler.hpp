@@ -1,0 +1,49 @@
+#pragma once
+// Sparse assembly. The pattern of the free dofs is built once from the element connectivity, with
+// a map from every element matrix entry to its slot in the compressed storage, so an update only
+// scatters values. Full vectors are indexed 3 * node + component (the layout of NodalField).
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "libstruct/model/model.hpp"
+
+namespace flexmoor::model {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+class Assembler {
+ public:
+  explicit Assembler(const Model& model);
+
+  int equationCount() const { return model_.equationCount(); }
+  const SparseMatrix& pattern() const { return pattern_; }
+
+  // Internal force F(u) as a full vector; with K, also the tangent on the free dofs (Eq. 4.48).
+  void internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const;
+  // External load P at the state's load factor: nodal loads, gravity and line loads.
+  void externalLoad(const State& state, Eigen::VectorXd& load) const;
+  // Mass matrix on the free dofs, in the same pattern as the tangent (Eq. 4.49).
+  void mass(const State& state, element::MassKind kind, SparseMatrix& M) const;
+
+  // Free-dof part of a full vector, and the inverse scatter into a nodal field.
+  Eigen::VectorXd restrictToFree(const Eigen::VectorXd& full) const;
+  void addFree(const Eigen::VectorXd& free_values, NodalField& field) const;
+  // Sets the constrained dofs of the displacement to their prescribed value times the load factor.
+  void applyPrescribed(State& state) const;
+
+  std::vector<element::ElementResult> elementResults(const State& state) const;
+
+ private:
+  element::ElementContext context(const State& state, int e) const {
+    return {model_.reference(), state, e};
+  }
+  template <class ElementMatrix>
+  void scatterMatrix(int e, const ElementMatrix& k, SparseMatrix& K) const;
+
+  const Model& model_;
+  SparseMatrix pattern_;
+  std::vector<std::vector<int>> full_index_;  // per element: full index of each local dof
+  std::vector<std::vector<int>> slot_;        // per element: value slot of each (a, b), or -1
+};
+
+}  // namespace flexmoor::model

@@ -1,0 +1,44 @@
+#include "libstruct/model/model.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace flexmoor::model {
+
+int Model::addNode(const Eigen::Vector3d& reference_position) {
+  const int n = nodeCount();
+  reference_.conservativeResize(3, n + 1);
+  reference_.col(n) = reference_position;
+  constrained_.conservativeResize(3, n + 1);
+  constrained_.col(n).setConstant(false);
+  prescribed_.conservativeResize(3, n + 1);
+  prescribed_.col(n).setZero();
+  return n;
+}
+
+int Model::addElement(std::unique_ptr<element::Element> element) {
+  for (int n : element->nodes())
+    if (n < 0 || n >= nodeCount())
+      throw std::out_of_range("element refers to node " + std::to_string(n) + " of " +
+                              std::to_string(nodeCount()));
+  elements_.push_back(std::move(element));
+  return elementCount() - 1;
+}
+
+void Model::constrain(int node, int component, double value) {
+  constrained_(component, node) = true;
+  prescribed_(component, node) = value;
+}
+
+void Model::addNodalLoad(int node, const Eigen::Vector3d& force) {
+  nodal_loads_.push_back({node, force});
+}
+
+void Model::numberEquations() {
+  equation_.resize(3, nodeCount());
+  equation_count_ = 0;
+  for (int n = 0; n < nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k) equation_(k, n) = constrained_(k, n) ? -1 : equation_count_++;
+}
+
+}  // namespace flexmoor::model

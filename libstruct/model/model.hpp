@@ -1,0 +1,62 @@
+#pragma once
+// A structural model: nodes, elements, constraints and the load pattern. Each node has three
+// translational dofs (x, y, z). A dof is either free (it has an equation number) or constrained
+// to a prescribed displacement, which is scaled by the load factor like the loads.
+#include <memory>
+#include <vector>
+
+#include "libstruct/element/element.hpp"
+#include "libstruct/model/line_load.hpp"
+#include "libstruct/model/state.hpp"
+
+namespace flexmoor::model {
+
+struct NodalLoad {
+  int node;
+  Eigen::Vector3d force;
+};
+
+class Model {
+ public:
+  int addNode(const Eigen::Vector3d& reference_position);
+  int addElement(std::unique_ptr<element::Element> element);
+
+  // Constrains dof `component` (0, 1, 2 = x, y, z) of `node` to the prescribed displacement
+  // `value` (reached at load factor 1).
+  void constrain(int node, int component, double value = 0.0);
+  void addNodalLoad(int node, const Eigen::Vector3d& force);
+  void setGravity(const Eigen::Vector3d& g) { gravity_ = g; }
+  void addLineLoad(std::shared_ptr<const LineLoad> load) { line_loads_.push_back(std::move(load)); }
+
+  int nodeCount() const { return static_cast<int>(reference_.cols()); }
+  int elementCount() const { return static_cast<int>(elements_.size()); }
+  const NodalField& reference() const { return reference_; }
+  const element::Element& element(int i) const { return *elements_[i]; }
+  const std::vector<std::unique_ptr<element::Element>>& elements() const { return elements_; }
+  const std::vector<NodalLoad>& nodalLoads() const { return nodal_loads_; }
+  const Eigen::Vector3d& gravity() const { return gravity_; }
+  const std::vector<std::shared_ptr<const LineLoad>>& lineLoads() const { return line_loads_; }
+
+  bool isConstrained(int node, int component) const { return constrained_(component, node); }
+  double prescribed(int node, int component) const { return prescribed_(component, node); }
+
+  // Equation number of a dof, or -1 for a constrained dof. Valid after numberEquations().
+  int equation(int node, int component) const { return equation_(component, node); }
+  int equationCount() const { return equation_count_; }
+  void numberEquations();
+
+  State initialState() const { return State(nodeCount()); }
+
+ private:
+  NodalField reference_ = NodalField(3, 0);
+  std::vector<std::unique_ptr<element::Element>> elements_;
+  Eigen::Matrix<bool, 3, Eigen::Dynamic> constrained_ = Eigen::Matrix<bool, 3, Eigen::Dynamic>(3, 0);
+  NodalField prescribed_ = NodalField(3, 0);
+  Eigen::Matrix3Xi equation_ = Eigen::Matrix3Xi(3, 0);
+  int equation_count_ = 0;
+  std::vector<NodalLoad> nodal_loads_;
+  Eigen::Vector3d gravity_ = Eigen::Vector3d::Zero();
+  std::vector<std::shared_ptr<const LineLoad>> line_loads_;
+};
+
+}  // namespace flexmoor::model

@@ -1,0 +1,36 @@
+#pragma once
+// Sparse direct solvers for the linearised systems. The symmetric tangent is factorised with
+// CHOLMOD (symbolic analysis once per pattern, numeric factorisation per update); when it is not
+// positive definite (compression, a limit point) the solver falls back to UMFPACK's LU, which is
+// also the solver for non-symmetric systems (follower-pressure load stiffness).
+#include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
+#include <memory>
+
+#include "libstruct/model/assembler.hpp"
+
+namespace flexmoor::solve {
+
+enum class MatrixKind { Symmetric, Unsymmetric };
+
+class LinearSolver {
+ public:
+  explicit LinearSolver(MatrixKind kind = MatrixKind::Symmetric) : kind_(kind) {}
+
+  // Numeric factorisation of A (the symbolic analysis is done on the first call). Returns false
+  // when A is singular.
+  bool factorize(const model::SparseMatrix& A);
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // True when the last factorisation needed LU (the matrix was not positive definite).
+  bool usedLu() const { return use_lu_; }
+
+ private:
+  bool factorizeLu(const model::SparseMatrix& A);
+
+  MatrixKind kind_;
+  bool analysed_llt_ = false, analysed_lu_ = false, use_lu_ = false;
+  Eigen::CholmodSupernodalLLT<model::SparseMatrix, Eigen::Lower> llt_;
+  Eigen::UmfPackLU<model::SparseMatrix> lu_;
+};
+
+}  // namespace flexmoor::solve

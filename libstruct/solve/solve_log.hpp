@@ -1,0 +1,37 @@
+#pragma once
+// What the solvers tell the outside world while they work, and the error they raise when they
+// cannot converge. The state handed back on failure is the last converged one.
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace flexmoor::solve {
+
+struct IterationRecord {
+  int increment = 0;       // increment (static) or pseudo-time step (relaxation), from 1
+  int iteration = 0;       // Newton iteration within it, from 1
+  double load_factor = 0.0;
+  double displacement_norm = 0.0;  // Eq. 5.1: sqrt(sum du^2 / sum u^2)
+  double residual_norm = 0.0;      // |R| / max(|P|, |F|)
+};
+
+// Receives one record per iteration and a line of text per finished increment.
+struct SolveLog {
+  std::function<void(const IterationRecord&)> iteration;
+  std::function<void(const std::string&)> message;
+
+  void report(const IterationRecord& r) const { if (iteration) iteration(r); }
+  void say(const std::string& s) const { if (message) message(s); }
+};
+
+class ConvergenceError : public std::runtime_error {
+ public:
+  ConvergenceError(const std::string& what, IterationRecord last)
+      : std::runtime_error(what), last_(last) {}
+  const IterationRecord& last() const { return last_; }
+
+ private:
+  IterationRecord last_;
+};
+
+}  // namespace flexmoor::solve

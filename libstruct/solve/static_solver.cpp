@@ -1,0 +1,80 @@
+#include "libstruct/solve/static_solver.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "libstruct/solve/equilibrium.hpp"
+#include "libstruct/solve/linear_solver.hpp"
+
+namespace flexmoor::solve {
+namespace {
+
+bool converged(const Convergence& c, double displacement_norm, double residual_norm) {
+  const bool displacement_ok =
+      !c.use_displacement || displacement_norm < c.displacement_tolerance;
+  const bool residual_ok = !c.use_residual || residual_norm < c.residual_tolerance;
+  return displacement_ok && residual_ok;
+}
+
+std::string failure(const StaticOptions& o, const IterationRecord& r, const std::string& why) {
+  std::ostringstream s;
+  s << "increment " << r.increment << " of " << o.increments << " (load factor " << r.load_factor
+    << ") " << why << " after " << r.iteration << " iterations: displacement norm "
+    << r.displacement_norm << ", residual " << r.residual_norm;
+  return s.str();
+}
+
+}  // namespace
+
+StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
+                         const StaticOptions& options, const SolveLog& log) {
+  StaticReport report;
+  LinearSolver linear;
+  model::SparseMatrix K;
+  const double start = state.load_factor;
+  for (int inc = 1; inc <= options.increments; ++inc) {
+    const model::State converged_state = state;
+    state.load_factor = start + (options.load_factor - start) * inc / options.increments;
+    assembler.applyPrescribed(state);
+    IterationRecord rec{inc, 0, state.load_factor, 0.0, 0.0};
+    int updates = 0;
+    bool done = false;
+    for (int it = 0; it <= options.max_iterations; ++it) {
+      const bool update = options.flavour == NewtonFlavour::Full || it == 0 ||
+                          it % std::max(1, options.stiffness_update) == 0;
+      const Residual R = outOfBalance(assembler, state, update ? &K : nullptr);
+      rec.residual_norm = R.relative();
+      if (it > 0) log.report(rec);
+      if (it > 0 && converged(options.convergence, rec.displacement_norm, rec.residual_norm)) {
+        done = true;
+        break;
+      }
+      if (!std::isfinite(rec.residual_norm) || it == options.max_iterations) break;
+      if (update) {
+        ++updates;
+        if (!linear.factorize(K)) {
+          state = converged_state;
+          throw ConvergenceError(failure(options, rec, "has a singular tangent"), rec);
+        }
+      }
+      const Eigen::VectorXd du = linear.solve(R.free);
+      assembler.addFree(du, state.displacement);
+      rec.iteration = it + 1;
+      rec.displacement_norm = displacementNorm(assembler, du, state.displacement);
+    }
+    if (!done) {
+      state = converged_state;
+      throw ConvergenceError(failure(options, rec, "did not converge"), rec);
+    }
+    report.increments.push_back({inc, state.load_factor, rec.iteration, updates,
+                                 rec.displacement_norm, rec.residual_norm});
+    std::ostringstream s;
+    s << "increment " << inc << "/" << options.increments << "  load factor "
+      << state.load_factor << "  iterations " << rec.iteration << "  |du|/|u| "
+      << rec.displacement_norm << "  |R|/|P| " << rec.residual_norm;
+    log.say(s.str());
+  }
+  return report;
+}
+
+}  // namespace flexmoor::solve

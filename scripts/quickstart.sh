@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# Fresh machine to first result: set up, build, run the default named case.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+build/bin/flexmoor run "${1:-ex1-suspended-cable-8xL2}" -o results

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs what flexmoor needs from Debian's packages (only what is missing; run as root or with
+# sudo available), then configures and builds a Release tree in build/. Idempotent.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgsl-dev
+          libfftw3-dev libnetcdf-dev netcdf-bin libyaml-cpp-dev libgtest-dev libbenchmark-dev
+          libspectra-dev libpng-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "flexmoor setup: installing ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$jobs"
