@@ -75,7 +75,8 @@ void Assembler::internalForce(const State& state, Eigen::VectorXd& force, Sparse
 
 void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
   load.setZero(3 * model_.nodeCount());
-  for (const NodalLoad& p : model_.nodalLoads()) load.segment<3>(3 * p.node) += p.force;
+  for (const NodalLoad& p : model_.nodalLoads())
+    if (!p.history) load.segment<3>(3 * p.node) += p.force;
   const bool gravity = !model_.gravity().isZero();
   Eigen::VectorXd p;
   for (int e = 0; e < model_.elementCount(); ++e) {
@@ -90,6 +91,23 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
     }
   }
   load *= state.load_factor;
+  for (const NodalLoad& p : model_.nodalLoads())
+    if (p.history) load.segment<3>(3 * p.node) += p.history->value(state.time) * p.force;
+}
+
+void Assembler::inertiaForce(const State& state, element::MassKind kind,
+                             Eigen::VectorXd& force) const {
+  force.setZero(3 * model_.nodeCount());
+  Eigen::MatrixXd m;
+  Eigen::VectorXd a;
+  for (int e = 0; e < model_.elementCount(); ++e) {
+    model_.element(e).mass(context(state, e), kind, m);
+    const auto& index = full_index_[e];
+    a.resize(index.size());
+    for (size_t k = 0; k < index.size(); ++k) a(k) = state.acceleration.data()[index[k]];
+    const Eigen::VectorXd f = m * a;
+    for (size_t k = 0; k < index.size(); ++k) force(index[k]) += f(k);
+  }
 }
 
 void Assembler::mass(const State& state, element::MassKind kind, SparseMatrix& M) const {
@@ -119,8 +137,16 @@ void Assembler::addFree(const Eigen::VectorXd& free_values, NodalField& field) c
 void Assembler::applyPrescribed(State& state) const {
   for (int n = 0; n < model_.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k)
-      if (model_.isConstrained(n, k))
-        state.displacement(k, n) = state.load_factor * model_.prescribed(n, k);
+      if (model_.isConstrained(n, k)) {
+        const double value = model_.prescribed(n, k);
+        if (const TimeFunction* f = model_.motion(n, k)) {
+          state.displacement(k, n) = value * f->value(state.time);
+          state.velocity(k, n) = value * f->rate(state.time);
+          state.acceleration(k, n) = value * f->acceleration(state.time);
+        } else {
+          state.displacement(k, n) = state.load_factor * value;
+        }
+      }
 }
 
 std::vector<element::ElementResult> Assembler::elementResults(const State& state) const {

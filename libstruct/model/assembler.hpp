@@ -15,6 +15,7 @@ class Assembler {
  public:
   explicit Assembler(const Model& model);
 
+  const Model& model() const { return model_; }
   int equationCount() const { return model_.equationCount(); }
   const SparseMatrix& pattern() const { return pattern_; }
 
@@ -22,13 +23,16 @@ class Assembler {
   void internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const;
   // External load P at the state's load factor: nodal loads, gravity and line loads.
   void externalLoad(const State& state, Eigen::VectorXd& load) const;
+  // Inertia force M u'' over all dofs, prescribed supports' accelerations included.
+  void inertiaForce(const State& state, element::MassKind kind, Eigen::VectorXd& force) const;
   // Mass matrix on the free dofs, in the same pattern as the tangent (Eq. 4.49).
   void mass(const State& state, element::MassKind kind, SparseMatrix& M) const;
 
   // Free-dof part of a full vector, and the inverse scatter into a nodal field.
   Eigen::VectorXd restrictToFree(const Eigen::VectorXd& full) const;
   void addFree(const Eigen::VectorXd& free_values, NodalField& field) const;
-  // Sets the constrained dofs of the displacement to their prescribed value times the load factor.
+  // Sets the constrained dofs to their prescribed value times the load factor, or to their
+  // history at the state's time (with its velocity and acceleration).
   void applyPrescribed(State& state) const;
 
   std::vector<element::ElementResult> elementResults(const State& state) const;

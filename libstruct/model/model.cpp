@@ -13,6 +13,7 @@ int Model::addNode(const Eigen::Vector3d& reference_position) {
   constrained_.col(n).setConstant(false);
   prescribed_.conservativeResize(3, n + 1);
   prescribed_.col(n).setZero();
+  motion_.resize(3 * (n + 1));
   return n;
 }
 
@@ -25,13 +26,16 @@ int Model::addElement(std::unique_ptr<element::Element> element) {
   return elementCount() - 1;
 }
 
-void Model::constrain(int node, int component, double value) {
+void Model::constrain(int node, int component, double value,
+                      std::shared_ptr<const TimeFunction> history) {
   constrained_(component, node) = true;
   prescribed_(component, node) = value;
+  motion_[3 * node + component] = std::move(history);
 }
 
-void Model::addNodalLoad(int node, const Eigen::Vector3d& force) {
-  nodal_loads_.push_back({node, force});
+void Model::addNodalLoad(int node, const Eigen::Vector3d& force,
+                         std::shared_ptr<const TimeFunction> history) {
+  nodal_loads_.push_back({node, force, std::move(history)});
 }
 
 void Model::numberEquations() {

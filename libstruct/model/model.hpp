@@ -8,12 +8,15 @@
 #include "libstruct/element/element.hpp"
 #include "libstruct/model/line_load.hpp"
 #include "libstruct/model/state.hpp"
+#include "libstruct/model/time_function.hpp"
 
 namespace flexmoor::model {
 
+// A nodal force: force * load factor, or force * history(t) when it has a history.
 struct NodalLoad {
   int node;
   Eigen::Vector3d force;
+  std::shared_ptr<const TimeFunction> history;
 };
 
 class Model {
@@ -22,9 +25,11 @@ class Model {
   int addElement(std::unique_ptr<element::Element> element);
 
   // Constrains dof `component` (0, 1, 2 = x, y, z) of `node` to the prescribed displacement
-  // `value` (reached at load factor 1).
-  void constrain(int node, int component, double value = 0.0);
-  void addNodalLoad(int node, const Eigen::Vector3d& force);
+  // value * load factor, or value * history(t) when a history is given.
+  void constrain(int node, int component, double value = 0.0,
+                 std::shared_ptr<const TimeFunction> history = nullptr);
+  void addNodalLoad(int node, const Eigen::Vector3d& force,
+                    std::shared_ptr<const TimeFunction> history = nullptr);
   void setGravity(const Eigen::Vector3d& g) { gravity_ = g; }
   void addLineLoad(std::shared_ptr<const LineLoad> load) { line_loads_.push_back(std::move(load)); }
 
@@ -39,6 +44,9 @@ class Model {
 
   bool isConstrained(int node, int component) const { return constrained_(component, node); }
   double prescribed(int node, int component) const { return prescribed_(component, node); }
+  const TimeFunction* motion(int node, int component) const {
+    return motion_[3 * node + component].get();
+  }
 
   // Equation number of a dof, or -1 for a constrained dof. Valid after numberEquations().
   int equation(int node, int component) const { return equation_(component, node); }
@@ -52,6 +60,7 @@ class Model {
   std::vector<std::unique_ptr<element::Element>> elements_;
   Eigen::Matrix<bool, 3, Eigen::Dynamic> constrained_ = Eigen::Matrix<bool, 3, Eigen::Dynamic>(3, 0);
   NodalField prescribed_ = NodalField(3, 0);
+  std::vector<std::shared_ptr<const TimeFunction>> motion_;  // per dof, 3 * node + component
   Eigen::Matrix3Xi equation_ = Eigen::Matrix3Xi(3, 0);
   int equation_count_ = 0;
   std::vector<NodalLoad> nodal_loads_;

@@ -15,7 +15,11 @@ enum class MatrixKind { Symmetric, Unsymmetric };
 
 class LinearSolver {
  public:
-  explicit LinearSolver(MatrixKind kind = MatrixKind::Symmetric) : kind_(kind) {}
+  // CHOLMOD's own printing is off: a matrix that is not positive definite is an expected event
+  // here (the solver falls back to LU), reported through the return value, not on stderr.
+  explicit LinearSolver(MatrixKind kind = MatrixKind::Symmetric) : kind_(kind) {
+    llt_.cholmod().print = 0;
+  }
 
   // Numeric factorisation of A (the symbolic analysis is done on the first call). Returns false
   // when A is singular.

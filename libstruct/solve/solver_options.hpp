@@ -40,3 +40,36 @@ struct RelaxationOptions {
 };
 
 }  // namespace flexmoor::solve
+
+#include <vector>
+
+#include "libstruct/element/element.hpp"
+
+namespace flexmoor::solve {
+
+// A run of equal time steps; a schedule is a list of them (the dissertation's Example 9 uses
+// 50 steps of 0.02 s, then 0.05 s).
+struct TimeSegment {
+  double dt = 0.0;
+  int steps = 0;
+};
+
+// Newmark time integration (Eq. 4.55-4.63) with Newton iterations in every step.
+struct DynamicOptions {
+  std::vector<TimeSegment> schedule;
+  double gamma = 0.5;  // the dissertation's constants (average acceleration)
+  double beta = 0.25;
+  // HHT-alpha in [-1/3, 0]: numerical damping of the highest modes; when non-zero, gamma and beta
+  // are set to (1 - 2 alpha) / 2 and (1 - alpha)^2 / 4 (second order, unconditionally stable).
+  double hht_alpha = 0.0;
+  NewtonFlavour flavour = NewtonFlavour::Full;
+  int stiffness_update = 1;  // modified Newton: time steps between tangent updates
+  int max_iterations = 30;
+  Convergence convergence;
+  element::MassKind mass = element::MassKind::Consistent;
+  double rayleigh_mass = 0.0;       // C = rayleigh_mass M + rayleigh_stiffness K_T(start of step)
+  double rayleigh_stiffness = 0.0;
+  int max_step_cuts = 6;            // a failed step is halved, at most this many times
+};
+
+}  // namespace flexmoor::solve

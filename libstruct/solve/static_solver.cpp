@@ -24,6 +24,20 @@ std::string failure(const StaticOptions& o, const IterationRecord& r, const std:
   return s.str();
 }
 
+// A straight, unstressed cable has no transverse stiffness, so the first tangent of a pretension
+// step is singular. Where such a dof carries no load the correct increment is zero: a tiny
+// diagonal shift (1e-10 of the mean diagonal) lets the solve go on, and the following Newton
+// iterations, on the exact residual, remove its effect. A real mechanism under load still fails
+// to converge and is reported.
+bool factorizeRegularised(LinearSolver& linear, model::SparseMatrix& K, const SolveLog& log) {
+  if (linear.factorize(K)) return true;
+  const double shift = 1e-10 * K.diagonal().cwiseAbs().mean();
+  if (!(shift > 0.0)) return false;
+  K.diagonal().array() += shift;
+  log.say("singular tangent: regularised with a diagonal shift of " + std::to_string(shift));
+  return linear.factorize(K);
+}
+
 }  // namespace
 
 StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
@@ -52,7 +66,7 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
       if (!std::isfinite(rec.residual_norm) || it == options.max_iterations) break;
       if (update) {
         ++updates;
-        if (!linear.factorize(K)) {
+        if (!factorizeRegularised(linear, K, log)) {
           state = converged_state;
           throw ConvergenceError(failure(options, rec, "has a singular tangent"), rec);
         }

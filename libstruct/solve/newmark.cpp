@@ -1,0 +1,176 @@
+#include "libstruct/solve/newmark.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "libstruct/solve/equilibrium.hpp"
+#include "libstruct/solve/linear_solver.hpp"
+
+namespace flexmoor::solve {
+namespace {
+
+using Eigen::VectorXd;
+
+// Writes the free-dof values into a nodal field, leaving the constrained dofs as they are.
+void setFree(const model::Model& m, const VectorXd& values, model::NodalField& field) {
+  for (int n = 0; n < m.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k)
+      if (const int eq = m.equation(n, k); eq >= 0) field(k, n) = values(eq);
+}
+
+class NewmarkStepper {
+ public:
+  NewmarkStepper(const model::Model& m, const model::Assembler& a, const DynamicOptions& o)
+      : model_(m), assembler_(a), o_(o) {
+    gamma_ = o.gamma;
+    beta_ = o.beta;
+    alpha_ = o.hht_alpha;
+    if (alpha_ != 0.0) {
+      gamma_ = 0.5 - alpha_;
+      beta_ = 0.25 * (1.0 - alpha_) * (1.0 - alpha_);
+    }
+    model::State dummy = m.initialState();
+    assembler_.mass(dummy, o.mass, M_);
+  }
+
+  const model::SparseMatrix& mass() const { return M_; }
+
+  // Damping force C v on the free dofs, C = rayleigh_mass M + rayleigh_stiffness K0.
+  VectorXd damping(const VectorXd& v_free) const {
+    VectorXd f = o_.rayleigh_mass * (M_ * v_free);
+    if (o_.rayleigh_stiffness != 0.0) f += o_.rayleigh_stiffness * (K0_ * v_free);
+    return f;
+  }
+
+  // Advances `s` by h. Returns false (s unchanged) when Newton does not converge.
+  bool step(model::State& s, double h, DynamicReport& report, IterationRecord& rec) {
+    const double a0 = 1.0 / (beta_ * h * h), a1 = 1.0 / (beta_ * h), a2 = 0.5 / beta_ - 1.0;
+    const VectorXd u_n = assembler_.restrictToFree(asVector(s.displacement));
+    const VectorXd v_n = assembler_.restrictToFree(asVector(s.velocity));
+    const VectorXd acc_n = assembler_.restrictToFree(asVector(s.acceleration));
+    if (o_.rayleigh_stiffness != 0.0) {
+      VectorXd F;
+      assembler_.internalForce(s, F, &K0_);
+    }
+    VectorXd previous_balance;  // HHT: P_n - F_n - C v_n
+    if (alpha_ != 0.0) previous_balance = outOfBalance(assembler_, s, nullptr).free - damping(v_n);
+
+    model::State next = s;
+    next.time = s.time + h;
+    assembler_.applyPrescribed(next);
+    VectorXd u = u_n;  // predictor: the displacement of the last step
+    model::SparseMatrix K;
+    const bool refresh_each_step = o_.flavour == NewtonFlavour::Full ||
+                                   steps_since_update_ + 1 >= std::max(1, o_.stiffness_update) ||
+                                   h != factor_h_;
+    for (int it = 0; it <= o_.max_iterations; ++it) {
+      const VectorXd acc = a0 * (u - u_n) - a1 * v_n - a2 * acc_n;         // Eq. 4.57
+      const VectorXd v = v_n + h * ((1.0 - gamma_) * acc_n + gamma_ * acc);  // Eq. 4.58
+      setFree(model_, u, next.displacement);
+      setFree(model_, v, next.velocity);
+      setFree(model_, acc, next.acceleration);
+      const bool update = o_.flavour == NewtonFlavour::Full ? true : (it == 0 && refresh_each_step);
+      Residual R = outOfBalance(assembler_, next, update ? &K : nullptr);
+      VectorXd inertia_full;
+      assembler_.inertiaForce(next, o_.mass, inertia_full);
+      const VectorXd inertia = assembler_.restrictToFree(inertia_full);
+      R.free = (1.0 + alpha_) * (R.free - damping(v)) - inertia;  // Eq. 4.63
+      if (alpha_ != 0.0) R.free -= alpha_ * previous_balance;
+      R.scale = std::max(R.scale, inertia_full.norm());
+      rec.residual_norm = R.relative();
+      if (it > 0) {
+        const Convergence& c = o_.convergence;
+        const bool d_ok = !c.use_displacement || rec.displacement_norm < c.displacement_tolerance;
+        const bool r_ok = !c.use_residual || rec.residual_norm < c.residual_tolerance;
+        if (d_ok && r_ok) {
+          s = next;
+          steps_since_update_ = refresh_each_step ? 0 : steps_since_update_ + 1;
+          return true;
+        }
+      }
+      if (!std::isfinite(rec.residual_norm) || it == o_.max_iterations) return false;
+      if (update) {
+        // Effective tangent (Eq. 4.63): (1 + alpha) (K_T + gamma / (beta h) C) + a0 M
+        model::SparseMatrix Keff = (1.0 + alpha_) * K + a0 * M_;
+        const double c = (1.0 + alpha_) * gamma_ / (beta_ * h);
+        if (o_.rayleigh_mass != 0.0) Keff += (c * o_.rayleigh_mass) * M_;
+        if (o_.rayleigh_stiffness != 0.0) Keff += (c * o_.rayleigh_stiffness) * K0_;
+        if (!linear_.factorize(Keff)) return false;
+        factor_h_ = h;
+        ++report.tangent_updates;
+      }
+      const VectorXd du = linear_.solve(R.free);
+      u += du;
+      ++report.iterations;
+      rec.iteration = it + 1;
+      const double u_norm = u.norm();
+      rec.displacement_norm = u_norm > 0.0 ? du.norm() / u_norm : du.norm();  // Eq. 5.1
+    }
+    return false;
+  }
+
+  // u'' at the start from equilibrium: M a = P - F - C v (free dofs); zero if M is singular.
+  void initialAcceleration(model::State& s) {
+    assembler_.applyPrescribed(s);
+    VectorXd inertia_full;
+    assembler_.inertiaForce(s, o_.mass, inertia_full);  // prescribed accelerations only
+    const VectorXd rhs = outOfBalance(assembler_, s, nullptr).free -
+                         assembler_.restrictToFree(inertia_full) -
+                         damping(assembler_.restrictToFree(asVector(s.velocity)));
+    LinearSolver mass_solver;
+    if (mass_solver.factorize(M_)) setFree(model_, mass_solver.solve(rhs), s.acceleration);
+  }
+
+ private:
+  const model::Model& model_;
+  const model::Assembler& assembler_;
+  const DynamicOptions& o_;
+  double gamma_, beta_, alpha_;
+  model::SparseMatrix M_, K0_;
+  LinearSolver linear_;
+  double factor_h_ = -1.0;
+  int steps_since_update_ = 0;
+};
+
+// Advances by h, halving on failure down to max_step_cuts levels.
+void advance(NewmarkStepper& stepper, model::State& state, double h, int depth,
+             const DynamicOptions& o, DynamicReport& report, const SolveLog& log,
+             const std::function<void(const model::State&)>& on_step) {
+  IterationRecord rec{report.steps + 1, 0, state.load_factor, 0.0, 0.0};
+  if (stepper.step(state, h, report, rec)) {
+    ++report.steps;
+    log.report(rec);
+    if (on_step) on_step(state);
+    return;
+  }
+  if (depth >= o.max_step_cuts) {
+    std::ostringstream s;
+    s << "time step at t = " << state.time << " s did not converge even with dt = " << h
+      << " s (" << rec.iteration << " iterations, displacement norm " << rec.displacement_norm
+      << ", residual " << rec.residual_norm << ")";
+    throw ConvergenceError(s.str(), rec);
+  }
+  ++report.cuts;
+  std::ostringstream s;
+  s << "t = " << state.time << " s: Newton failed with dt = " << h << " s, halving";
+  log.say(s.str());
+  advance(stepper, state, 0.5 * h, depth + 1, o, report, log, on_step);
+  advance(stepper, state, 0.5 * h, depth + 1, o, report, log, on_step);
+}
+
+}  // namespace
+
+DynamicReport integrate(const model::Assembler& assembler, model::State& state,
+                        const DynamicOptions& options, const SolveLog& log,
+                        const std::function<void(const model::State&)>& on_step) {
+  const model::Model& m = assembler.model();
+  NewmarkStepper stepper(m, assembler, options);
+  DynamicReport report;
+  stepper.initialAcceleration(state);
+  for (const TimeSegment& segment : options.schedule)
+    for (int k = 0; k < segment.steps; ++k)
+      advance(stepper, state, segment.dt, 0, options, report, log, on_step);
+  return report;
+}
+
+}  // namespace flexmoor::solve
