@@ -33,7 +33,7 @@ class LinearSolver {
 
   MatrixKind kind_;
   bool analysed_llt_ = false, analysed_lu_ = false, use_lu_ = false;
-  Eigen::CholmodSupernodalLLT<model::SparseMatrix, Eigen::Lower> llt_;
+  Eigen::CholmodDecomposition<model::SparseMatrix, Eigen::Lower> llt_;
   Eigen::UmfPackLU<model::SparseMatrix> lu_;
 };
 

@@ -1,0 +1,87 @@
+// Time per Newton iteration (element sweep + factorisation + solve) against problem size.
+// Run: build/bin/flexmoor_bench [--benchmark_filter=...]; docs/performance.md records figures.
+#include <benchmark/benchmark.h>
+
+#include "libstruct/element/cable_element.hpp"
+#include "libstruct/model/assembler.hpp"
+#include "libstruct/solve/equilibrium.hpp"
+#include "libstruct/solve/linear_solver.hpp"
+
+namespace {
+
+using namespace flexmoor;
+
+// A taut chain of `elements` cable elements of `order` nodes along x, both ends pinned, sagged
+// by a small transverse displacement so every element is stressed.
+struct CableChain {
+  model::Model model;
+  model::State state;
+
+  CableChain(int elements, int order) {
+    const int nodes = elements * (order - 1) + 1;
+    const double length = 100.0;
+    for (int i = 0; i < nodes; ++i) model.addNode({length * i / (nodes - 1), 0.0, 0.0});
+    element::CableSection section{
+        0.01, 7850.0,
+        std::make_shared<material::LinearElasticCable>(2e11, material::Compression::Carry)};
+    for (int e = 0; e < elements; ++e) {
+      std::vector<int> n;
+      for (int k = 0; k < order; ++k) n.push_back(e * (order - 1) + k);
+      model.addElement(element::makeCableElement(n, section));
+    }
+    for (int k = 0; k < 3; ++k) {
+      model.constrain(0, k);
+      model.constrain(nodes - 1, k, k == 0 ? 0.01 : 0.0);
+    }
+    model.numberEquations();
+    state = model.initialState();
+    state.load_factor = 1.0;
+    for (int i = 0; i < nodes; ++i) {
+      const double x = static_cast<double>(i) / (nodes - 1);
+      state.displacement(0, i) = 0.01 * x;
+      state.displacement(1, i) = 0.1 * x * (1.0 - x);
+      state.displacement(2, i) = -0.5 * x * (1.0 - x);
+    }
+  }
+};
+
+void NewtonIterationCableChain(benchmark::State& bench) {
+  const int dofs = static_cast<int>(bench.range(0));
+  CableChain chain(dofs / 3, 2);
+  model::Assembler assembler(chain.model);
+  solve::LinearSolver linear;
+  model::SparseMatrix K;
+  for (auto _ : bench) {
+    const solve::Residual R = solve::outOfBalance(assembler, chain.state, &K);
+    linear.factorize(K);
+    benchmark::DoNotOptimize(linear.solve(R.free));
+  }
+  bench.counters["dofs"] = assembler.equationCount();
+  bench.SetComplexityN(assembler.equationCount());
+}
+BENCHMARK(NewtonIterationCableChain)
+    ->RangeMultiplier(10)
+    ->Range(100, 100000)
+    ->Complexity(benchmark::oN)
+    ->Unit(benchmark::kMicrosecond);
+
+void ElementSweepCableChain(benchmark::State& bench) {
+  CableChain chain(static_cast<int>(bench.range(0)) / 3, 2);
+  model::Assembler assembler(chain.model);
+  model::SparseMatrix K;
+  Eigen::VectorXd F;
+  for (auto _ : bench) {
+    assembler.internalForce(chain.state, F, &K);
+    benchmark::DoNotOptimize(F.data());
+  }
+  bench.SetComplexityN(assembler.equationCount());
+}
+BENCHMARK(ElementSweepCableChain)
+    ->RangeMultiplier(10)
+    ->Range(100, 100000)
+    ->Complexity(benchmark::oN)
+    ->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
