@@ -13,10 +13,13 @@ namespace flexmoor::element {
 
 enum class MassKind { Consistent, Lumped };
 
-// What an element reports after a solution: axial force at integration points and at its ends.
+// What an element reports after a solution. Lines: axial force at integration points and at
+// their ends. Membranes: the stress-resultant tensor (force per current length, Cartesian 3 x 3,
+// in the tangent plane) at each integration point.
 struct ElementResult {
   std::vector<double> point_tension;  // one per integration point, in the element's order
   double end_tension[2] = {0.0, 0.0};
+  std::vector<Eigen::Matrix3d> point_resultant;
 };
 
 struct ElementContext {
@@ -45,6 +48,13 @@ class Element {
   // Nodal loads of a distributed line load; elements that are not lines add nothing.
   virtual void lineLoad(const ElementContext&, const model::LineLoad&, Eigen::VectorXd& p) const {
     p.setZero(dofCount());
+  }
+  // Follower pressure p on the deformed surface (Eq. 3.30-3.37): nodal forces f and, when dfdu is
+  // given, the load stiffness df/du (non-symmetric). Elements that are not surfaces add nothing.
+  virtual void pressureLoad(const ElementContext&, double, Eigen::VectorXd& f,
+                            Eigen::MatrixXd* dfdu) const {
+    f.setZero(dofCount());
+    if (dfdu) dfdu->setZero(dofCount(), dofCount());
   }
   virtual ElementResult result(const ElementContext& c) const = 0;
 

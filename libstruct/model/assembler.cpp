@@ -93,6 +93,30 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
   load *= state.load_factor;
   for (const NodalLoad& p : model_.nodalLoads())
     if (p.history) load.segment<3>(3 * p.node) += p.history->value(state.time) * p.force;
+  for (const PressureLoad& pressure : model_.pressures()) {
+    const double value = pressureFactor(pressure, state);
+    for (int e : pressure.elements) {
+      model_.element(e).pressureLoad(context(state, e), value, p, nullptr);
+      const auto& index = full_index_[e];
+      for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
+    }
+  }
+}
+
+double Assembler::pressureFactor(const PressureLoad& load, const State& state) const {
+  return load.pressure * (load.history ? load.history->value(state.time) : state.load_factor);
+}
+
+void Assembler::subtractLoadStiffness(const State& state, SparseMatrix& K) const {
+  Eigen::VectorXd p;
+  Eigen::MatrixXd dp;
+  for (const PressureLoad& pressure : model_.pressures()) {
+    const double value = pressureFactor(pressure, state);
+    for (int e : pressure.elements) {
+      model_.element(e).pressureLoad(context(state, e), value, p, &dp);
+      scatterMatrix(e, (-dp).eval(), K);
+    }
+  }
 }
 
 void Assembler::inertiaForce(const State& state, element::MassKind kind,

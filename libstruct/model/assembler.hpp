@@ -23,6 +23,8 @@ class Assembler {
   void internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const;
   // External load P at the state's load factor: nodal loads, gravity and line loads.
   void externalLoad(const State& state, Eigen::VectorXd& load) const;
+  // Subtracts the follower-pressure load stiffness dP/du from K (K - dP/du: non-symmetric).
+  void subtractLoadStiffness(const State& state, SparseMatrix& K) const;
   // Inertia force M u'' over all dofs, prescribed supports' accelerations included.
   void inertiaForce(const State& state, element::MassKind kind, Eigen::VectorXd& force) const;
   // Mass matrix on the free dofs, in the same pattern as the tangent (Eq. 4.49).
@@ -43,6 +45,8 @@ class Assembler {
   }
   template <class ElementMatrix>
   void scatterMatrix(int e, const ElementMatrix& k, SparseMatrix& K) const;
+
+  double pressureFactor(const PressureLoad& load, const State& state) const;
 
   const Model& model_;
   SparseMatrix pattern_;

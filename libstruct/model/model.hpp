@@ -19,6 +19,14 @@ struct NodalLoad {
   std::shared_ptr<const TimeFunction> history;
 };
 
+// A follower pressure on surface elements, acting along the current normal y,1 x y,2
+// (Eq. 3.30-3.37): pressure * load factor, or pressure * history(t).
+struct PressureLoad {
+  std::vector<int> elements;
+  double pressure;
+  std::shared_ptr<const TimeFunction> history;
+};
+
 class Model {
  public:
   int addNode(const Eigen::Vector3d& reference_position);
@@ -30,6 +38,7 @@ class Model {
                  std::shared_ptr<const TimeFunction> history = nullptr);
   void addNodalLoad(int node, const Eigen::Vector3d& force,
                     std::shared_ptr<const TimeFunction> history = nullptr);
+  void addPressure(PressureLoad load) { pressures_.push_back(std::move(load)); }
   void setGravity(const Eigen::Vector3d& g) { gravity_ = g; }
   void addLineLoad(std::shared_ptr<const LineLoad> load) { line_loads_.push_back(std::move(load)); }
 
@@ -39,6 +48,7 @@ class Model {
   const element::Element& element(int i) const { return *elements_[i]; }
   const std::vector<std::unique_ptr<element::Element>>& elements() const { return elements_; }
   const std::vector<NodalLoad>& nodalLoads() const { return nodal_loads_; }
+  const std::vector<PressureLoad>& pressures() const { return pressures_; }
   const Eigen::Vector3d& gravity() const { return gravity_; }
   const std::vector<std::shared_ptr<const LineLoad>>& lineLoads() const { return line_loads_; }
 
@@ -64,6 +74,7 @@ class Model {
   Eigen::Matrix3Xi equation_ = Eigen::Matrix3Xi(3, 0);
   int equation_count_ = 0;
   std::vector<NodalLoad> nodal_loads_;
+  std::vector<PressureLoad> pressures_;
   Eigen::Vector3d gravity_ = Eigen::Vector3d::Zero();
   std::vector<std::shared_ptr<const LineLoad>> line_loads_;
 };

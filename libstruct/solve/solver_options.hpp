@@ -24,6 +24,9 @@ struct StaticOptions {
   int stiffness_update = 1;  // modified Newton: iterations between tangent updates
   int max_iterations = 50;
   Convergence convergence;
+  // Follower pressure: with the consistent load stiffness dP/du (non-symmetric, UMFPACK), or, as
+  // the dissertation does (Eq. 4.41), without it, iterating on the symmetric tangent alone.
+  bool pressure_load_stiffness = false;
 };
 
 // Viscous relaxation (Appendix C): D u' + F(u) = P with D = C I, implicit steps of unit

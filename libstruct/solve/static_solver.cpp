@@ -43,7 +43,8 @@ bool factorizeRegularised(LinearSolver& linear, model::SparseMatrix& K, const So
 StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
                          const StaticOptions& options, const SolveLog& log) {
   StaticReport report;
-  LinearSolver linear;
+  LinearSolver linear(options.pressure_load_stiffness ? MatrixKind::Unsymmetric
+                                                     : MatrixKind::Symmetric);
   model::SparseMatrix K;
   const double start = state.load_factor;
   for (int inc = 1; inc <= options.increments; ++inc) {
@@ -66,6 +67,7 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
       if (!std::isfinite(rec.residual_norm) || it == options.max_iterations) break;
       if (update) {
         ++updates;
+        if (options.pressure_load_stiffness) assembler.subtractLoadStiffness(state, K);
         if (!factorizeRegularised(linear, K, log)) {
           state = converged_state;
           throw ConvergenceError(failure(options, rec, "has a singular tangent"), rec);

@@ -1,0 +1,196 @@
+#include "libstruct/element/membrane_element.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "libstruct/shape/quad_shape.hpp"
+#include "libstruct/shape/triangle_shape.hpp"
+
+namespace flexmoor::element {
+
+using Eigen::Matrix2d;
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+namespace {
+
+// Rows d(gamma_11, gamma_22, 2 gamma_12)/du^I of node I (Eq. 4.39): M^I,1 y,1; M^I,2 y,2;
+// M^I,1 y,2 + M^I,2 y,1.
+Matrix3d strainRows(const Eigen::Vector2d& dM, const Eigen::Matrix<double, 3, 2>& y) {
+  Matrix3d B;
+  B.row(0) = dM(0) * y.col(0).transpose();
+  B.row(1) = dM(1) * y.col(1).transpose();
+  B.row(2) = dM(0) * y.col(1).transpose() + dM(1) * y.col(0).transpose();
+  return B;
+}
+
+Matrix3d skew(const Vector3d& v) {
+  Matrix3d S;
+  S << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return S;
+}
+
+}  // namespace
+
+template <class Shape>
+MembraneElement<Shape>::MembraneElement(std::vector<int> nodes, MembraneSection section,
+                                        const shape::QuadratureRule2D& rule)
+    : Element(std::move(nodes)), section_(std::move(section)), rule_(rule) {
+  if (static_cast<int>(this->nodes().size()) != N)
+    throw std::invalid_argument("membrane element node count does not match its shape");
+}
+
+template <class Shape>
+std::string MembraneElement<Shape>::typeName() const {
+  return "membrane" + std::to_string(N);
+}
+
+template <class Shape>
+void MembraneElement<Shape>::gather(const ElementContext& c, Coordinates& X,
+                                    Coordinates& Y) const {
+  for (int I = 0; I < N; ++I) {
+    const int n = nodes()[I];
+    X.col(I) = c.reference.col(n);
+    Y.col(I) = X.col(I) + c.state.displacement.col(n);
+  }
+}
+
+template <class Shape>
+void MembraneElement<Shape>::internalForce(const ElementContext& c, Eigen::VectorXd& f,
+                                           Eigen::MatrixXd* K) const {
+  Coordinates X, Y;
+  gather(c, X, Y);
+  f.setZero(3 * N);
+  if (K) K->setZero(3 * N, 3 * N);
+  for (int q = 0; q < rule_.size(); ++q) {
+    const typename Shape::Derivatives dM = Shape::derivatives(rule_.points[q].x(), rule_.points[q].y());
+    const Eigen::Matrix<double, 3, 2> x = X * dM, y = Y * dM;  // x,a and y,a
+    const Matrix2d a = x.transpose() * x, A = y.transpose() * y;
+    const material::MembraneStress s = section_.material->stress(a, A);
+    const double dV = section_.thickness * std::sqrt(a.determinant()) * rule_.weights[q];
+    // Eq. 3.17 / 4.29: F^I = int T^ab M^I,a y,b h0 sqrt(a)
+    for (int I = 0; I < N; ++I)
+      f.template segment<3>(3 * I) += dV * (y * (s.T * dM.row(I).transpose()));
+    if (!K) continue;
+    // Eq. 4.39: geometric T^ab M^I,a M^J,b delta_ij + material B_I^T C B_J
+    Eigen::Matrix<double, 3, 3 * N> CB;
+    Eigen::Matrix<double, 3, 3 * N> B;
+    for (int I = 0; I < N; ++I) B.template middleCols<3>(3 * I) = strainRows(dM.row(I), y);
+    CB = s.C * B;
+    K->noalias() += dV * (B.transpose() * CB);
+    const Eigen::Matrix<double, N, N> G = dV * (dM * s.T * dM.transpose());
+    for (int I = 0; I < N; ++I)
+      for (int J = 0; J < N; ++J) K->template block<3, 3>(3 * I, 3 * J).diagonal().array() += G(I, J);
+  }
+}
+
+template <class Shape>
+void MembraneElement<Shape>::mass(const ElementContext& c, MassKind kind,
+                                  Eigen::MatrixXd& M) const {
+  Coordinates X, Y;
+  gather(c, X, Y);
+  Eigen::Matrix<double, N, N> m = Eigen::Matrix<double, N, N>::Zero();
+  for (int q = 0; q < rule_.size(); ++q) {
+    const Eigen::Vector2d& p = rule_.points[q];
+    const typename Shape::Values Mv = Shape::values(p.x(), p.y());
+    const Eigen::Matrix<double, 3, 2> x = X * Shape::derivatives(p.x(), p.y());
+    const double dA = std::sqrt((x.transpose() * x).determinant()) * rule_.weights[q];
+    m += (section_.density * section_.thickness * dA) * (Mv * Mv.transpose());  // Eq. 4.40
+  }
+  if (kind == MassKind::Lumped) m = (m.diagonal() * (m.sum() / m.diagonal().sum())).asDiagonal();
+  M.setZero(3 * N, 3 * N);
+  for (int I = 0; I < N; ++I)
+    for (int J = 0; J < N; ++J) M.block<3, 3>(3 * I, 3 * J).diagonal().setConstant(m(I, J));
+}
+
+template <class Shape>
+void MembraneElement<Shape>::bodyLoad(const ElementContext& c, const Vector3d& g,
+                                      Eigen::VectorXd& p) const {
+  Coordinates X, Y;
+  gather(c, X, Y);
+  p.setZero(3 * N);
+  for (int q = 0; q < rule_.size(); ++q) {
+    const Eigen::Vector2d& pt = rule_.points[q];
+    const typename Shape::Values Mv = Shape::values(pt.x(), pt.y());
+    const Eigen::Matrix<double, 3, 2> x = X * Shape::derivatives(pt.x(), pt.y());
+    const double dA = std::sqrt((x.transpose() * x).determinant()) * rule_.weights[q];
+    for (int I = 0; I < N; ++I)
+      p.template segment<3>(3 * I) += (section_.density * section_.thickness * Mv(I) * dA) * g;
+  }
+}
+
+template <class Shape>
+void MembraneElement<Shape>::pressureLoad(const ElementContext& c, double pressure,
+                                          Eigen::VectorXd& f, Eigen::MatrixXd* dfdu) const {
+  Coordinates X, Y;
+  gather(c, X, Y);
+  f.setZero(3 * N);
+  if (dfdu) dfdu->setZero(3 * N, 3 * N);
+  for (int q = 0; q < rule_.size(); ++q) {
+    const Eigen::Vector2d& pt = rule_.points[q];
+    const typename Shape::Values Mv = Shape::values(pt.x(), pt.y());
+    const typename Shape::Derivatives dM = Shape::derivatives(pt.x(), pt.y());
+    const Eigen::Matrix<double, 3, 2> y = Y * dM;
+    const double w = pressure * rule_.weights[q];
+    // Eq. 3.37: P^I = int p M^I (y,1 x y,2) dxi1 dxi2 (the cross product carries the area)
+    const Vector3d n = y.col(0).cross(y.col(1));
+    for (int I = 0; I < N; ++I) f.template segment<3>(3 * I) += (w * Mv(I)) * n;
+    if (!dfdu) continue;
+    // d(y,1 x y,2)/du^J = M^J,1 (-[y,2]x) + M^J,2 [y,1]x, i.e. dn = dy,1 x y,2 + y,1 x dy,2
+    const Matrix3d S1 = skew(y.col(0)), S2 = skew(y.col(1));
+    for (int J = 0; J < N; ++J) {
+      const Matrix3d dn = -dM(J, 0) * S2 + dM(J, 1) * S1;
+      for (int I = 0; I < N; ++I) dfdu->template block<3, 3>(3 * I, 3 * J) += (w * Mv(I)) * dn;
+    }
+  }
+}
+
+template <class Shape>
+ElementResult MembraneElement<Shape>::result(const ElementContext& c) const {
+  Coordinates X, Y;
+  gather(c, X, Y);
+  ElementResult r;
+  for (int q = 0; q < rule_.size(); ++q) {
+    const typename Shape::Derivatives dM = Shape::derivatives(rule_.points[q].x(), rule_.points[q].y());
+    const Eigen::Matrix<double, 3, 2> x = X * dM, y = Y * dM;
+    const Matrix2d a = x.transpose() * x, A = y.transpose() * y;
+    const material::MembraneStress s = section_.material->stress(a, A);
+    // n = h sigma = h0 sqrt(a / A) T^ab y,a (x) y,b: force per unit current length
+    r.point_resultant.push_back(section_.thickness * std::sqrt(a.determinant() / A.determinant()) *
+                                (y * s.T * y.transpose()));
+  }
+  return r;
+}
+
+template class MembraneElement<shape::QuadShape<4>>;
+template class MembraneElement<shape::QuadShape<8>>;
+template class MembraneElement<shape::QuadShape<12>>;
+template class MembraneElement<shape::TriangleShape<3>>;
+template class MembraneElement<shape::TriangleShape<6>>;
+template class MembraneElement<shape::TriangleShape<10>>;
+
+std::unique_ptr<Element> makeMembraneElement(const std::string& shape, std::vector<int> nodes,
+                                             MembraneSection section, int quadrature) {
+  const int n = static_cast<int>(nodes.size());
+  if (shape == "quad") {
+    const int order = quadrature > 0 ? quadrature : (n == 4 ? 2 : n == 8 ? 3 : 4);
+    const auto& rule = shape::gaussLegendreQuad(order);
+    switch (n) {
+      case 4: return std::make_unique<MembraneElement<shape::QuadShape<4>>>(std::move(nodes), std::move(section), rule);
+      case 8: return std::make_unique<MembraneElement<shape::QuadShape<8>>>(std::move(nodes), std::move(section), rule);
+      case 12: return std::make_unique<MembraneElement<shape::QuadShape<12>>>(std::move(nodes), std::move(section), rule);
+    }
+  } else if (shape == "triangle") {
+    const int degree = quadrature > 0 ? quadrature : (n == 3 ? 2 : n == 6 ? 4 : 6);
+    const auto& rule = shape::triangleRule(degree);
+    switch (n) {
+      case 3: return std::make_unique<MembraneElement<shape::TriangleShape<3>>>(std::move(nodes), std::move(section), rule);
+      case 6: return std::make_unique<MembraneElement<shape::TriangleShape<6>>>(std::move(nodes), std::move(section), rule);
+      case 10: return std::make_unique<MembraneElement<shape::TriangleShape<10>>>(std::move(nodes), std::move(section), rule);
+    }
+  }
+  throw std::invalid_argument("membrane elements are quads of 4, 8, 12 nodes or triangles of 3, 6, "
+                              "10 nodes (got " + shape + " with " + std::to_string(n) + ")");
+}
+
+}  // namespace flexmoor::element

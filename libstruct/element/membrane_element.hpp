@@ -1,0 +1,50 @@
+#pragma once
+// Curved isoparametric membrane element, total Lagrangian, plane stress in convected coordinates
+// (Eq. 2.26-2.42, 3.1-3.17, 4.28-4.41). One kernel for every shape: Shape is QuadShape<4|8|12>
+// or TriangleShape<3|6|10> (values and derivatives on the reference cell).
+#include <memory>
+
+#include "libstruct/element/element.hpp"
+#include "libstruct/material/membrane_material.hpp"
+#include "libstruct/shape/triangle_quadrature.hpp"
+
+namespace flexmoor::element {
+
+struct MembraneSection {
+  double thickness = 0.0;  // h0
+  double density = 0.0;    // rho0, mass per unit reference volume
+  std::shared_ptr<const material::MembraneMaterial> material;
+};
+
+template <class Shape>
+class MembraneElement final : public Element {
+ public:
+  MembraneElement(std::vector<int> nodes, MembraneSection section,
+                  const shape::QuadratureRule2D& rule);
+
+  std::string typeName() const override;
+  void internalForce(const ElementContext& c, Eigen::VectorXd& f,
+                     Eigen::MatrixXd* K) const override;
+  void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
+  void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
+                Eigen::VectorXd& p) const override;
+  void pressureLoad(const ElementContext& c, double p, Eigen::VectorXd& f,
+                    Eigen::MatrixXd* dfdu) const override;
+  ElementResult result(const ElementContext& c) const override;
+
+ private:
+  static constexpr int N = Shape::Values::RowsAtCompileTime;
+  using Coordinates = Eigen::Matrix<double, 3, N>;
+  void gather(const ElementContext& c, Coordinates& X, Coordinates& Y) const;
+
+  MembraneSection section_;
+  const shape::QuadratureRule2D& rule_;
+};
+
+// Builds the membrane element for `shape` ("quad" or "triangle") and its node count; quadrature
+// order 0 picks the default (quads: Gauss n x n with n = 2, 3, 4 for Q4, Q8, Q12; triangles:
+// degree 2, 4, 6 for T3, T6, T10, exact for the mass matrix of a flat element).
+std::unique_ptr<Element> makeMembraneElement(const std::string& shape, std::vector<int> nodes,
+                                             MembraneSection section, int quadrature = 0);
+
+}  // namespace flexmoor::element

@@ -1,0 +1,141 @@
+// The flexmoor command as a user meets it: named cases run to the published numbers, bad input
+// is refused with FILE:LINE messages and exit code 2, non-convergence exits with 3 and keeps the
+// last converged state on disk.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+Run flexmoor(const std::string& args) {
+  const std::string command = std::string(FLEXMOOR_BINARY) + " " + args + " 2>&1";
+  Run r{0, ""};
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The value of "key": NUMBER in a summary.json.
+double summaryValue(const std::string& json, const std::string& key) {
+  const std::regex pattern("\"" + key + "\"\\s*:\\s*([-+0-9.eE]+)");
+  std::smatch m;
+  if (!std::regex_search(json, m, pattern)) return std::nan("");
+  return std::stod(m[1]);
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("flexmoor-cli-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Table 1 of the dissertation (seed-tables.csv), centre sag and support movement in ft; the
+// issue asks for 1.5%.
+struct Table1Row {
+  const char* case_name;
+  double sag, movement;
+};
+
+class Example1 : public ::testing::TestWithParam<Table1Row> {};
+
+TEST_P(Example1, NamedCaseReproducesTable1Within1_5Percent) {
+  const Table1Row row = GetParam();
+  const fs::path dir = scratch(row.case_name);
+  const Run r = flexmoor(std::string("run ") + row.case_name + " -o " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string json = readFile(dir / "summary.json");
+  EXPECT_NEAR(summaryValue(json, "center_sag"), row.sag, 0.015 * row.sag) << json;
+  EXPECT_NEAR(summaryValue(json, "support_movement"), row.movement, 0.015 * row.movement) << json;
+  EXPECT_TRUE(fs::exists(dir / (std::string(row.case_name) + ".nc")));
+  EXPECT_NE(json.find("\"center_sag\": \"ft\""), std::string::npos) << json;
+}
+
+INSTANTIATE_TEST_SUITE_P(Table1, Example1,
+                         ::testing::Values(Table1Row{"ex1-suspended-cable-8xL2", 58.13, 47.68},
+                                           Table1Row{"ex1-suspended-cable-4xL3", 59.25, 46.93},
+                                           Table1Row{"ex1-suspended-cable-2xL4", 57.84, 46.89}));
+
+TEST(Cli, HelpTeachesTheCommands) {
+  const Run r = flexmoor("--help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* word : {"run", "check", "cases", "summary.json", "Exit codes"})
+    EXPECT_NE(r.output.find(word), std::string::npos) << word;
+}
+
+TEST(Cli, CasesListsEveryExampleOneCase) {
+  const Run r = flexmoor("cases");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* name :
+       {"ex1-suspended-cable-8xL2", "ex1-suspended-cable-4xL3", "ex1-suspended-cable-2xL4"})
+    EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
+}
+
+TEST(Cli, CheckValidatesWithoutRunning) {
+  const fs::path dir = scratch("check");
+  const Run r = flexmoor("check ex1-suspended-cable-8xL2");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("valid"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BadCaseIsRefusedWithEveryProblemAndItsLine) {
+  const fs::path dir = scratch("bad");
+  const fs::path file = dir / "bad.yaml";
+  std::ofstream(file) << "name: bad\n"
+                         "units: US\n"
+                         "materials:\n"
+                         "  cable: {type: linear_elastic, E: -1000 psf}\n"
+                         "sections:\n"
+                         "  cable: {material: cable, area: 0.1 ft, density: 1}\n"
+                         "lines:\n"
+                         "  - {from: [0, 0, 0], to: [10, 0, 0], elements: 2, order: 7, section: cable}\n"
+                         "steps:\n"
+                         "  - static: {increments: 0}\n";
+  const Run r = flexmoor("run " + file.string() + " -o " + dir.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("bad.yaml:4:"), std::string::npos) << r.output;   // E < 0
+  EXPECT_NE(r.output.find("bad.yaml:6:"), std::string::npos) << r.output;   // area in ft
+  EXPECT_NE(r.output.find("bad.yaml:8:"), std::string::npos) << r.output;   // order 7
+  EXPECT_NE(r.output.find("bad.yaml:10:"), std::string::npos) << r.output;  // 0 increments
+  EXPECT_FALSE(fs::exists(dir / "bad.nc")) << "nothing may run on bad input";
+}
+
+TEST(Cli, NonConvergenceExitsWith3AndKeepsTheLastConvergedState) {
+  const fs::path dir = scratch("diverge");
+  const fs::path file = dir / "diverge.yaml";
+  std::string text = readFile(fs::path(FLEXMOOR_SOURCE_DIR) / "cases/seed/ex1-suspended-cable-8xL2.yaml");
+  // One relaxation step cannot reach equilibrium.
+  text = std::regex_replace(text, std::regex("damping: 10000\\}"), "damping: 10000, max_steps: 1}");
+  text = std::regex_replace(text, std::regex("name: ex1-suspended-cable-8xL2"), "name: diverge");
+  std::ofstream(file) << text;
+  const Run r = flexmoor("run " + file.string() + " -o " + dir.string());
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("did not converge"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "diverge.nc")) << r.output;
+  EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
+}
+
+}  // namespace
