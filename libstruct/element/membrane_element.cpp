@@ -1,5 +1,7 @@
 #include "libstruct/element/membrane_element.hpp"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <cmath>
 #include <stdexcept>
 

@@ -17,9 +17,25 @@ struct Convergence {
   double residual_tolerance = 1e-8;
 };
 
+// Arc-length continuation (Crisfield): the load factor becomes an unknown and each increment is
+// constrained to |du|^2 + psi^2 dlambda^2 |P|^2 = ds^2, so a run passes limit points and flat
+// stretches of the equilibrium path. psi = 0 is the cylindrical form, psi = 1 the spherical one.
+struct ArcLengthOptions {
+  double psi = 0.0;
+  int desired_iterations = 5;  // ds grows or shrinks by sqrt(desired / used) per increment
+  double max_growth = 2.0;     // bound on that factor
+  int max_increments = 2000;
+  int max_cuts = 10;           // a failed increment is retried with ds / 2
+};
+
+enum class LoadControl { Load, ArcLength };
+
 struct StaticOptions {
   double load_factor = 1.0;  // target load factor, reached from the current one
-  int increments = 1;
+  int increments = 1;        // load control: equal increments; arc length: the first increment
+                             // is 1 / increments of the way
+  LoadControl control = LoadControl::Load;
+  ArcLengthOptions arc;
   NewtonFlavour flavour = NewtonFlavour::Full;
   int stiffness_update = 1;  // modified Newton: iterations between tangent updates
   int max_iterations = 50;

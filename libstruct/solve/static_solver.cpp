@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "libstruct/solve/arc_length.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
 
@@ -42,6 +43,7 @@ bool factorizeRegularised(LinearSolver& linear, model::SparseMatrix& K, const So
 
 StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
                          const StaticOptions& options, const SolveLog& log) {
+  if (options.control == LoadControl::ArcLength) return solveArcLength(assembler, state, options, log);
   StaticReport report;
   LinearSolver linear(options.pressure_load_stiffness ? MatrixKind::Unsymmetric
                                                      : MatrixKind::Symmetric);

@@ -1,0 +1,177 @@
+#include "libstruct/solve/arc_length.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "libstruct/solve/equilibrium.hpp"
+#include "libstruct/solve/linear_solver.hpp"
+
+namespace flexmoor::solve {
+namespace {
+
+using Eigen::VectorXd;
+
+class ArcLengthPath {
+ public:
+  ArcLengthPath(const model::Assembler& a, const StaticOptions& o)
+      : a_(a), o_(o),
+        linear_(o.pressure_load_stiffness ? MatrixKind::Unsymmetric : MatrixKind::Symmetric) {}
+
+  // One increment of arc length ds from the converged `state`; false if it fails (state is then
+  // undefined and must be restored by the caller).
+  bool increment(model::State& state, double& ds, int sign, const VectorXd* previous,
+                 VectorXd& du_total, double& dlambda, IterationRecord& rec) {
+    const VectorXd u0 = a_.restrictToFree(asVector(state.displacement));
+    VectorXd P, dut;
+    if (!tangentSolve(state, nullptr, P, dut)) return false;
+    const double p2 = o_.arc.psi * o_.arc.psi * P.squaredNorm();
+    const double scale = std::sqrt(dut.squaredNorm() + p2);
+    if (ds <= 0.0) ds = std::abs(o_.load_factor - state.load_factor) / o_.increments * scale;
+    int direction = sign;
+    if (previous) direction = previous->dot(dut) >= 0.0 ? 1 : -1;
+    dlambda = direction * ds / scale;
+    du_total = dlambda * dut;
+    const double lambda0 = state.load_factor;
+    apply(state, u0, du_total, lambda0 + dlambda);
+    for (int it = 1; it <= o_.max_iterations; ++it) {
+      VectorXd R;
+      if (!tangentSolve(state, &R, P, dut)) return false;
+      rec.residual_norm = residual_norm_;
+      if (it > 1) {
+        const Convergence& c = o_.convergence;
+        if ((!c.use_displacement || rec.displacement_norm < c.displacement_tolerance) &&
+            (!c.use_residual || rec.residual_norm < c.residual_tolerance))
+          return true;
+      }
+      const VectorXd duR = linear_.solve(R);
+      // |du_total + duR + x dut|^2 + psi^2 (dlambda + x)^2 |P|^2 = ds^2
+      const double psi2 = o_.arc.psi * o_.arc.psi * P.squaredNorm();
+      const VectorXd base = du_total + duR;
+      const double qa = dut.squaredNorm() + psi2;
+      const double qb = 2.0 * dut.dot(base) + 2.0 * psi2 * dlambda;
+      const double qc = base.squaredNorm() + psi2 * dlambda * dlambda - ds * ds;
+      const double disc = qb * qb - 4.0 * qa * qc;
+      if (disc < 0.0 || !std::isfinite(disc)) return false;
+      const double r1 = (-qb + std::sqrt(disc)) / (2.0 * qa);
+      const double r2 = (-qb - std::sqrt(disc)) / (2.0 * qa);
+      // the root that keeps the increment closest to its own direction
+      const double x = (base + r1 * dut).dot(du_total) >= (base + r2 * dut).dot(du_total) ? r1 : r2;
+      const VectorXd du = duR + x * dut;
+      du_total += du;
+      dlambda += x;
+      apply(state, u0, du_total, lambda0 + dlambda);
+      rec.iteration = it;
+      rec.load_factor = state.load_factor;
+      rec.displacement_norm = displacementNorm(a_, du, state.displacement);
+    }
+    return false;
+  }
+
+ private:
+  // Factorises the tangent at `state` and solves K dut = P (the reference load at factor 1);
+  // with R given, also returns the residual.
+  bool tangentSolve(const model::State& state, VectorXd* R, VectorXd& P, VectorXd& dut) {
+    model::SparseMatrix K;
+    const Residual r = outOfBalance(a_, state, &K);
+    residual_norm_ = r.relative();
+    if (!std::isfinite(residual_norm_)) return false;
+    if (R) *R = r.free;
+    model::State unit = state;
+    unit.load_factor = 1.0;
+    VectorXd full;
+    a_.externalLoad(unit, full);
+    P = a_.restrictToFree(full);
+    if (o_.pressure_load_stiffness) a_.subtractLoadStiffness(state, K);
+    if (!linear_.factorize(K)) return false;
+    dut = linear_.solve(P);
+    return dut.allFinite();
+  }
+
+  void apply(model::State& state, const VectorXd& u0, const VectorXd& du, double lambda) const {
+    VectorXd u = u0 + du;
+    for (int n = 0; n < a_.model().nodeCount(); ++n)
+      for (int k = 0; k < 3; ++k)
+        if (const int eq = a_.model().equation(n, k); eq >= 0) state.displacement(k, n) = u(eq);
+    state.load_factor = lambda;
+  }
+
+  const model::Assembler& a_;
+  const StaticOptions& o_;
+  LinearSolver linear_;
+  double residual_norm_ = 0.0;
+};
+
+void refuseDisplacementControl(const model::Model& m) {
+  for (int n = 0; n < m.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k)
+      if (m.isConstrained(n, k) && m.prescribed(n, k) != 0.0 && !m.motion(n, k))
+        throw std::invalid_argument(
+            "arc-length control follows proportional loads; a prescribed support displacement "
+            "needs load control (node " + std::to_string(n + 1) + ")");
+}
+
+}  // namespace
+
+StaticReport solveArcLength(const model::Assembler& assembler, model::State& state,
+                            const StaticOptions& options, const SolveLog& log) {
+  refuseDisplacementControl(assembler.model());
+  StaticReport report;
+  ArcLengthPath path(assembler, options);
+  const double target = options.load_factor;
+  const int sign = target >= state.load_factor ? 1 : -1;
+  double ds = -1.0;  // set by the first predictor
+  VectorXd previous;
+  for (int inc = 1; inc <= options.arc.max_increments; ++inc) {
+    if (sign * (target - state.load_factor) <= 1e-12 * std::max(1.0, std::abs(target))) break;
+    const model::State converged = state;
+    IterationRecord rec{inc, 0, state.load_factor, 0.0, 0.0};
+    VectorXd du;
+    double dlambda = 0.0;
+    int cuts = 0;
+    while (!path.increment(state, ds, sign, previous.size() ? &previous : nullptr, du, dlambda, rec)) {
+      state = converged;
+      ds *= 0.5;
+      if (++cuts > options.arc.max_cuts) {
+        std::ostringstream s;
+        s << "arc-length increment " << inc << " from load factor " << converged.load_factor
+          << " did not converge even with arc length " << ds << " (residual " << rec.residual_norm
+          << ")";
+        throw ConvergenceError(s.str(), rec);
+      }
+    }
+    if (sign * (state.load_factor - target) > 0.0) {
+      // Past the target: land on it from the last converged state by load control.
+      state = converged;
+      StaticOptions last = options;
+      last.control = LoadControl::Load;
+      last.increments = 1;
+      last.load_factor = target;
+      const StaticReport landing = solveStatic(assembler, state, last, {});
+      report.increments.push_back(landing.increments.back());
+      report.increments.back().increment = inc;
+      log.say("increment " + std::to_string(inc) + "  landed on load factor " +
+              std::to_string(target) + " by load control");
+      break;
+    }
+    previous = du;
+    report.increments.push_back({inc, state.load_factor, rec.iteration, rec.iteration,
+                                 rec.displacement_norm, rec.residual_norm});
+    std::ostringstream s;
+    s << "increment " << inc << "  load factor " << state.load_factor << "  arc " << ds
+      << "  iterations " << rec.iteration << "  |R|/|P| " << rec.residual_norm;
+    log.say(s.str());
+    const double growth = std::sqrt(double(options.arc.desired_iterations) / std::max(1, rec.iteration));
+    ds *= std::clamp(growth, 1.0 / options.arc.max_growth, options.arc.max_growth);
+  }
+  if (sign * (target - state.load_factor) > 1e-12 * std::max(1.0, std::abs(target))) {
+    IterationRecord rec{static_cast<int>(report.increments.size()), 0, state.load_factor, 0, 0};
+    throw ConvergenceError("arc-length path did not reach load factor " + std::to_string(target) +
+                               " in " + std::to_string(options.arc.max_increments) + " increments",
+                           rec);
+  }
+  return report;
+}
+
+}  // namespace flexmoor::solve
