@@ -15,14 +15,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CliRun {
   int exit_code;
   std::string output;  // stdout and stderr
 };
 
-Run flexmoor(const std::string& args) {
+CliRun flexmoor(const std::string& args) {
   const std::string command = std::string(FLEXMOOR_BINARY) + " " + args + " 2>&1";
-  Run r{0, ""};
+  CliRun r{0, ""};
   FILE* pipe = popen(command.c_str(), "r");
   char buffer[4096];
   while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
@@ -65,7 +65,7 @@ class Example1 : public ::testing::TestWithParam<Table1Row> {};
 TEST_P(Example1, NamedCaseReproducesTable1Within1_5Percent) {
   const Table1Row row = GetParam();
   const fs::path dir = scratch(row.case_name);
-  const Run r = flexmoor(std::string("run ") + row.case_name + " -o " + dir.string());
+  const CliRun r = flexmoor(std::string("run ") + row.case_name + " -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string json = readFile(dir / "summary.json");
   EXPECT_NEAR(summaryValue(json, "center_sag"), row.sag, 0.015 * row.sag) << json;
@@ -80,14 +80,14 @@ INSTANTIATE_TEST_SUITE_P(Table1, Example1,
                                            Table1Row{"ex1-suspended-cable-2xL4", 57.84, 46.89}));
 
 TEST(Cli, HelpTeachesTheCommands) {
-  const Run r = flexmoor("--help");
+  const CliRun r = flexmoor("--help");
   EXPECT_EQ(r.exit_code, 0);
   for (const char* word : {"run", "check", "cases", "summary.json", "Exit codes"})
     EXPECT_NE(r.output.find(word), std::string::npos) << word;
 }
 
 TEST(Cli, CasesListsEveryExampleOneCase) {
-  const Run r = flexmoor("cases");
+  const CliRun r = flexmoor("cases");
   EXPECT_EQ(r.exit_code, 0);
   for (const char* name :
        {"ex1-suspended-cable-8xL2", "ex1-suspended-cable-4xL3", "ex1-suspended-cable-2xL4"})
@@ -96,7 +96,7 @@ TEST(Cli, CasesListsEveryExampleOneCase) {
 
 TEST(Cli, CheckValidatesWithoutRunning) {
   const fs::path dir = scratch("check");
-  const Run r = flexmoor("check ex1-suspended-cable-8xL2");
+  const CliRun r = flexmoor("check ex1-suspended-cable-8xL2");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("valid"), std::string::npos) << r.output;
 }
@@ -114,7 +114,7 @@ TEST(Cli, BadCaseIsRefusedWithEveryProblemAndItsLine) {
                          "  - {from: [0, 0, 0], to: [10, 0, 0], elements: 2, order: 7, section: cable}\n"
                          "steps:\n"
                          "  - static: {increments: 0}\n";
-  const Run r = flexmoor("run " + file.string() + " -o " + dir.string());
+  const CliRun r = flexmoor("run " + file.string() + " -o " + dir.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("bad.yaml:4:"), std::string::npos) << r.output;   // E < 0
   EXPECT_NE(r.output.find("bad.yaml:6:"), std::string::npos) << r.output;   // area in ft
@@ -131,7 +131,7 @@ TEST(Cli, NonConvergenceExitsWith3AndKeepsTheLastConvergedState) {
   text = std::regex_replace(text, std::regex("damping: 10000\\}"), "damping: 10000, max_steps: 1}");
   text = std::regex_replace(text, std::regex("name: ex1-suspended-cable-8xL2"), "name: diverge");
   std::ofstream(file) << text;
-  const Run r = flexmoor("run " + file.string() + " -o " + dir.string());
+  const CliRun r = flexmoor("run " + file.string() + " -o " + dir.string());
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("did not converge"), std::string::npos) << r.output;
   EXPECT_TRUE(fs::exists(dir / "diverge.nc")) << r.output;
