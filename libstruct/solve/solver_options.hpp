@@ -6,6 +6,8 @@ enum class NewtonFlavour {
   Full,      // Newton-Raphson: tangent updated every iteration
   Modified,  // modified Newton: tangent updated every `stiffness_update` iterations and at the
              // start of every increment
+  Bfgs,      // quasi-Newton: the tangent of the increment's start (refreshed like Modified),
+             // improved by BFGS rank-two updates between refreshes
 };
 
 // Convergence (Eq. 5.1): sqrt(sum du^2 / sum u^2) < displacement_tolerance, and/or

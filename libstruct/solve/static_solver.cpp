@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "libstruct/solve/arc_length.hpp"
+#include "libstruct/solve/bfgs.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
 
@@ -48,6 +49,7 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
   LinearSolver linear(options.pressure_load_stiffness ? MatrixKind::Unsymmetric
                                                      : MatrixKind::Symmetric);
   model::SparseMatrix K;
+  BfgsUpdates bfgs;
   const double start = state.load_factor;
   for (int inc = 1; inc <= options.increments; ++inc) {
     const model::State converged_state = state;
@@ -56,11 +58,13 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
     IterationRecord rec{inc, 0, state.load_factor, 0.0, 0.0};
     int updates = 0;
     bool done = false;
+    Eigen::VectorXd du, previous_residual;
     for (int it = 0; it <= options.max_iterations; ++it) {
       const bool update = options.flavour == NewtonFlavour::Full || it == 0 ||
                           it % std::max(1, options.stiffness_update) == 0;
       const Residual R = outOfBalance(assembler, state, update ? &K : nullptr);
       rec.residual_norm = R.relative();
+      if (options.flavour == NewtonFlavour::Bfgs && it > 0) bfgs.add(du, previous_residual - R.free);
       if (it > 0) log.report(rec);
       if (it > 0 && converged(options.convergence, rec.displacement_norm, rec.residual_norm)) {
         done = true;
@@ -74,8 +78,11 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
           state = converged_state;
           throw ConvergenceError(failure(options, rec, "has a singular tangent"), rec);
         }
+        bfgs.reset();
       }
-      const Eigen::VectorXd du = linear.solve(R.free);
+      du = options.flavour == NewtonFlavour::Bfgs ? bfgs.apply(R.free, linear)
+                                                  : linear.solve(R.free);
+      previous_residual = R.free;
       assembler.addFree(du, state.displacement);
       rec.iteration = it + 1;
       rec.displacement_norm = displacementNorm(assembler, du, state.displacement);
