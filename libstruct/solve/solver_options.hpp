@@ -53,8 +53,8 @@ struct RelaxationOptions {
   double load_factor = 1.0;
   double tolerance = 1e-3;              // Eq. C.15 on the step's displacement change
   double damping = 1.0e4;               // C, the damping matrix constant (Eq. C.11)
-  double initial_damping_factor = 0.01; // mu0 of Eq. C.13, the floor of one step's reduction
-  double decrement = 1.0;               // gamma of Eq. C.13, exponent on the convergence ratio
+  double initial_damping_factor = 0.01; // mu(0) of Eq. C.13: C(k+1) = mu(k) r(k) C(k)
+  double decrement = 1.0;               // gamma of Eq. C.14: mu(k+1) = gamma mu(k)
   double residual_tolerance = 1e-8;     // equilibrium check: |R| < tol * max(|P|, |F|)
   int max_steps = 500;
   int max_iterations = 30;              // Newton iterations inside one pseudo-time step

@@ -36,11 +36,12 @@ bool relaxationStep(const model::Assembler& assembler, model::State& state,
 }  // namespace
 
 // The damping schedule, flexmoor's reading of Eq. C.12-C.14 (partly illegible in the OCR): after
-// each step C is multiplied by mu = clamp((r_k / r_{k-1})^gamma, mu0, 1), where r is the step's
-// displacement-change ratio of Eq. C.15, mu0 the initial damping factor and gamma the decrement
-// coefficient: the damping falls as fast as the motion dies out, by at most 1/mu0 per step.
-// Once the motion is below the tolerance but the structure is not yet in equilibrium, C falls by
-// the full factor mu0. A step whose Newton iterations fail is retried with ten times the damping.
+// step k, C(k+1) = mu(k) r(k) C(k) (Eq. C.12-C.13), where r is the step's displacement-change
+// ratio of Eq. C.15, and mu(k+1) = gamma mu(k) (Eq. C.14) with mu(0) the initial damping factor
+// and gamma the decrement coefficient. The damping therefore falls at least by 1/mu per step,
+// faster as the motion dies out; gamma > 1 slows the fall in later steps. A step whose Newton
+// iterations fail is retried with ten times the damping, so the schedule cannot run away. The run
+// ends when Eq. C.15 is below the tolerance and the static residual below residual_tolerance.
 RelaxationReport relax(const model::Assembler& assembler, model::State& state,
                        const RelaxationOptions& o, const SolveLog& log) {
   RelaxationReport report;
