@@ -64,6 +64,8 @@ struct Case {
   std::vector<StepSpec> steps;
   std::vector<SummarySpec> summary;
   std::map<std::string, std::vector<int>> node_sets;  // named sets, 0-based nodes
+  std::vector<int> node_ids;  // the file's id of each model node (explicit or generated)
+  std::map<std::string, std::vector<int>> lines;  // nodes of each named line, start to end
 };
 
 }  // namespace flexmoor::app

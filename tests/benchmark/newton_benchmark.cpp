@@ -2,7 +2,10 @@
 // Run: build/bin/flexmoor_bench [--benchmark_filter=...]; docs/performance.md records figures.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+
 #include "libstruct/element/cable_element.hpp"
+#include "libstruct/element/membrane_element.hpp"
 #include "libstruct/model/assembler.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
@@ -45,19 +48,63 @@ struct CableChain {
   }
 };
 
-void NewtonIterationCableChain(benchmark::State& bench) {
-  const int dofs = static_cast<int>(bench.range(0));
-  CableChain chain(dofs / 3, 2);
-  model::Assembler assembler(chain.model);
+// A flat square membrane of n x n Q4 elements, edges pinned, biaxially stretched by 1% and lifted
+// into a dome so every element is stressed and curved.
+struct MembraneSheet {
+  model::Model model;
+  model::State state;
+
+  explicit MembraneSheet(int n) {
+    const int side = n + 1;
+    for (int j = 0; j < side; ++j)
+      for (int i = 0; i < side; ++i) model.addNode({double(i) / n, double(j) / n, 0.0});
+    element::MembraneSection section{
+        0.001, 1000.0, std::make_shared<material::LinearElasticPlaneStress>(1e7, 0.3)};
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = j * side + i;
+        model.addElement(element::makeMembraneElement("quad", {a, a + 1, a + side + 1, a + side}, section));
+      }
+    state = model.initialState();
+    for (int k = 0; k < model.nodeCount(); ++k) {
+      const double x = model.reference()(0, k), y = model.reference()(1, k);
+      const bool edge = x == 0.0 || y == 0.0 || x == 1.0 || y == 1.0;
+      for (int c = 0; c < 3; ++c)
+        if (edge) model.constrain(k, c, c < 2 ? 0.01 * model.reference()(c, k) : 0.0);
+      state.displacement.col(k) << 0.01 * x, 0.01 * y, 0.05 * x * (1 - x) * y * (1 - y);
+    }
+    model.numberEquations();
+    state.load_factor = 1.0;
+  }
+};
+
+template <class Structure>
+void newtonIteration(benchmark::State& bench, Structure& structure) {
+  model::Assembler assembler(structure.model);
   solve::LinearSolver linear;
   model::SparseMatrix K;
   for (auto _ : bench) {
-    const solve::Residual R = solve::outOfBalance(assembler, chain.state, &K);
+    const solve::Residual R = solve::outOfBalance(assembler, structure.state, &K);
     linear.factorize(K);
     benchmark::DoNotOptimize(linear.solve(R.free));
   }
   bench.counters["dofs"] = assembler.equationCount();
   bench.SetComplexityN(assembler.equationCount());
+}
+
+void NewtonIterationMembraneSheet(benchmark::State& bench) {
+  MembraneSheet sheet(static_cast<int>(std::sqrt(bench.range(0) / 3.0)));
+  newtonIteration(bench, sheet);
+}
+BENCHMARK(NewtonIterationMembraneSheet)
+    ->RangeMultiplier(10)
+    ->Range(100, 100000)
+    ->Complexity()
+    ->Unit(benchmark::kMicrosecond);
+
+void NewtonIterationCableChain(benchmark::State& bench) {
+  CableChain chain(static_cast<int>(bench.range(0)) / 3, 2);
+  newtonIteration(bench, chain);
 }
 BENCHMARK(NewtonIterationCableChain)
     ->RangeMultiplier(10)

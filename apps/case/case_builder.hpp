@@ -1,0 +1,95 @@
+#pragma once
+// The state of one case file being read, shared by the readers of its sections (one file each:
+// read_materials.cpp, read_mesh.cpp, node_refs.cpp, read_conditions.cpp, read_steps.cpp,
+// read_summary.cpp). A name defined with errors is remembered as broken, so that what refers to
+// it is not reported again.
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "apps/case/case.hpp"
+#include "apps/case/yaml_input.hpp"
+#include "libstruct/element/cable_element.hpp"
+
+namespace flexmoor::app {
+
+struct SectionSpec {
+  element::CableSection section;
+  int quadrature = 0;  // Gauss points per element; 0 = as many as the element has nodes
+};
+
+// A cable element a line generates; added to the model after the explicit elements.
+struct PendingCable {
+  std::vector<int> nodes;
+  std::string section;
+};
+
+struct CaseBuilder {
+  CaseBuilder(Diagnostics& diag, UnitSystem units, Case& result)
+      : in(diag, units), diag(diag), c(result), model(*result.model) {}
+
+  Input in;
+  Diagnostics& diag;
+  Case& c;
+  model::Model& model;
+
+  std::map<int, int> node_of_id;  // file id -> model node
+  std::set<int> broken_node_ids;  // explicit nodes given with errors
+  std::vector<int> node_line;     // model node -> line that defines it
+  std::map<std::string, std::shared_ptr<const material::CableMaterial>> materials;  // null: broken
+  std::map<std::string, std::optional<SectionSpec>> sections;  // nullopt: broken
+  std::set<std::string> broken_node_names;  // lines and node sets defined with errors
+  std::vector<PendingCable> line_cables;
+  // Type of each element in file order ("cable", "spring", "point_mass"; "" when broken).
+  std::vector<std::string> element_types;
+
+  // Adds a node with the next free id (after the largest so far).
+  int addGeneratedNode(const Eigen::Vector3d& position, int line);
+  int largestId() const { return node_of_id.empty() ? 0 : node_of_id.rbegin()->first; }
+  // A section by name; reports an unknown one (not a broken one).
+  const SectionSpec* section(const YAML::Node& n, const std::string& path);
+};
+
+// "one of: a, b, c" for the keys of a map, or "a name defined first" when it is empty.
+template <class Map>
+std::string nameList(const Map& names) {
+  if (names.empty()) return "a name defined first";
+  std::string list;
+  for (const auto& entry : names) list += (list.empty() ? "one of: " : ", ") + entry.first;
+  return list;
+}
+
+// tension_only | carry, for materials and springs.
+const std::vector<std::pair<std::string, material::Compression>>& compressionChoices();
+
+// Section readers, in the order readCase calls them.
+void readMaterials(CaseBuilder& b, const YAML::Node& n);
+void readSections(CaseBuilder& b, const YAML::Node& n);
+void readNodes(CaseBuilder& b, const YAML::Node& n);
+void readLines(CaseBuilder& b, const YAML::Node& n);
+void readElements(CaseBuilder& b, const YAML::Node& n);  // then adds the lines' elements
+void readNodeSets(CaseBuilder& b, const YAML::Node& n);
+void readSupports(CaseBuilder& b, const YAML::Node& n);
+void readLoads(CaseBuilder& b, const YAML::Node& n);
+void readSteps(CaseBuilder& b, const YAML::Node& n);
+void readSummary(CaseBuilder& b, const YAML::Node& n);
+// Reports free nodes that no element holds (their stiffness would be singular).
+void checkConnectivity(CaseBuilder& b);
+
+// Node references (node_refs.cpp). One node: an id, LINE.start, LINE.end or LINE.middle.
+std::optional<int> nodeRef(CaseBuilder& b, const YAML::Node& n, const std::string& path);
+// Several nodes: `all`, a node set, a line (all its nodes), one node reference, or a list of
+// these. Duplicates are dropped, the first occurrence's order kept.
+std::optional<std::vector<int>> nodeListRef(CaseBuilder& b, const YAML::Node& n,
+                                            const std::string& path);
+// `node: REF` or `nodes: LIST` (exactly one of them) in a map.
+std::optional<std::vector<int>> nodeOrNodes(CaseBuilder& b, Fields& f);
+
+// Checks that a name can be used to refer to something (a word without '.', not a number).
+bool checkName(CaseBuilder& b, const YAML::Node& at, const std::string& path,
+               const std::string& name);
+
+}  // namespace flexmoor::app

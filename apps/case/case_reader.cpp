@@ -1,0 +1,139 @@
+#include "apps/case/case_reader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <stdexcept>
+
+#include "apps/case/case_builder.hpp"
+
+namespace flexmoor::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kTopKeys = {"name",  "title", "units",    "materials", "sections",
+                                           "nodes", "lines", "elements", "node_sets", "supports",
+                                           "loads", "steps", "summary"};
+
+YAML::Node loadYaml(Diagnostics& diag) {
+  try {
+    return YAML::LoadFile(diag.file());
+  } catch (const YAML::BadFile&) {
+    diag.error(0, "cannot open the file");
+  } catch (const YAML::ParserException& e) {
+    diag.error(e.mark.line + 1, "not valid YAML: " + e.msg);
+  }
+  diag.throwIfAny();
+  return {};
+}
+
+// The case's name: used for output files, so a plain word.
+std::string readName(Diagnostics& diag, Input& in, const Fields& top, const std::string& path) {
+  const std::string stem = fs::path(path).stem().string();
+  const YAML::Node* n = top.find("name");
+  if (!n) return stem;
+  const std::string name = in.text(*n, "name").value_or(stem);
+  const bool plain = std::all_of(name.begin(), name.end(), [](char ch) {
+    return std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '_' || ch == '.';
+  });
+  if (plain && !name.empty() && name.front() != '.') return name;
+  diag.error(*n, "name: not usable as a file name (got '" + name +
+                     "', expected letters, digits, '-', '_' and '.')");
+  return stem;
+}
+
+// Every .yaml under the cases directory.
+std::vector<fs::path> caseFiles() {
+  std::vector<fs::path> files;
+  const fs::path dir(FLEXMOOR_CASES_DIR);
+  if (!fs::is_directory(dir)) return files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.is_regular_file() && entry.path().extension() == ".yaml")
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+    return a.stem().string() < b.stem().string();
+  });
+  return files;
+}
+
+}  // namespace
+
+Case readCase(const std::string& path) {
+  Diagnostics diag(path);
+  const YAML::Node root = loadYaml(diag);
+  Case c;
+  c.file = path;
+  c.model = std::make_unique<model::Model>();
+  Fields top(diag, root, "", kTopKeys);
+  if (const YAML::Node* u = top.require("units"))
+    c.units = Input(diag, UnitSystem::SI)
+                  .choice(*u, "units",
+                          std::vector<std::pair<std::string, UnitSystem>>{{"US", UnitSystem::US},
+                                                                          {"SI", UnitSystem::SI}})
+                  .value_or(UnitSystem::SI);
+  CaseBuilder b(diag, c.units, c);
+  c.name = readName(diag, b.in, top, path);
+  if (const YAML::Node* t = top.find("title")) c.title = b.in.text(*t, "title").value_or("");
+
+  // In dependency order; an absent section is an empty one.
+  const auto section = [&top](const char* key) {
+    const YAML::Node* n = top.find(key);
+    return n ? *n : YAML::Node();
+  };
+  readMaterials(b, section("materials"));
+  readSections(b, section("sections"));
+  readNodes(b, section("nodes"));
+  readLines(b, section("lines"));
+  readElements(b, section("elements"));
+  readNodeSets(b, section("node_sets"));
+  readSupports(b, section("supports"));
+  readLoads(b, section("loads"));
+  if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
+  readSummary(b, section("summary"));
+
+  c.model->numberEquations();
+  if (diag.empty()) {
+    if (c.model->elementCount() == 0)
+      diag.error(0, "the case has no elements (expected lines: or elements:)");
+    else if (c.model->equationCount() == 0)
+      diag.error(0, "every dof is fixed (expected something to solve for)");
+    checkConnectivity(b);
+  }
+  diag.throwIfAny();
+  return c;
+}
+
+std::string resolveCasePath(const std::string& name_or_path) {
+  if (fs::is_regular_file(name_or_path)) return name_or_path;
+  std::vector<fs::path> matches;
+  std::string available;
+  for (const fs::path& file : caseFiles()) {
+    if (file.stem() == name_or_path) matches.push_back(file);
+    available += (available.empty() ? "" : ", ") + file.stem().string();
+  }
+  if (matches.size() == 1) return matches.front().string();
+  if (matches.empty())
+    throw std::runtime_error("no case file or named case '" + name_or_path +
+                             "' (available: " + (available.empty() ? "none" : available) + ")");
+  std::string where;
+  for (const fs::path& m : matches) where += (where.empty() ? "" : ", ") + m.string();
+  throw std::runtime_error("case name '" + name_or_path + "' is ambiguous: " + where);
+}
+
+std::vector<std::pair<std::string, std::string>> listCases() {
+  std::vector<std::pair<std::string, std::string>> cases;
+  for (const fs::path& file : caseFiles()) {
+    std::string title;
+    try {
+      const YAML::Node root = YAML::LoadFile(file.string());
+      if (root.IsMap() && root["title"] && root["title"].IsScalar()) title = root["title"].Scalar();
+    } catch (const YAML::Exception& e) {
+      title = "(not valid YAML: " + e.msg + ")";
+    }
+    cases.emplace_back(file.stem().string(), title);
+  }
+  return cases;
+}
+
+}  // namespace flexmoor::app

@@ -1,0 +1,65 @@
+#pragma once
+// Reads a YAML case file into a validated Case. Every problem of the file is collected and
+// reported at once, as `FILE:LINE: what is wrong (got X, expected Y)`, in one CaseError.
+//
+// Schema (keys in brackets are optional; values with a physical dimension may carry a unit,
+// see units.hpp, and are otherwise in the case's system):
+//   name:     [word of letters, digits, '-', '_', '.'; default: the file's stem]
+//   title:    [one line]
+//   units:    US | SI                      US = ft, slug, s (lbf, lbf/ft^2); SI = m, kg, s (N, Pa)
+//   materials: NAME: {type: linear_elastic, E, [compression]}                          Eq. 2.53
+//                    {type: mooney_rivlin, C1, C2, [compression]}                        Eq. 2.54
+//              compression: tension_only (default) | carry
+//   sections:  NAME: {material, area, [density: 0], [quadrature: 0 = as many points as nodes]}
+//   nodes:     ID: [x, y, z]               ids >= 1, unique, any order
+//   lines:     - {[name], from: [x, y, z] | start_node: REF, to: [x, y, z] | end_node: REF,
+//                 elements, order: 2..4 nodes per element, section}
+//              equally spaced nodes; the generated ones take ids after the largest so far,
+//              in order along the line
+//   elements:  - {type: cable, nodes: [2..4 REF], section}
+//              - {type: spring, nodes: [REF, REF], stiffness, [rest_length: reference distance],
+//                 [compression: tension_only]}
+//              - {type: point_mass, node: REF, mass}
+//   node_sets: NAME: NODES
+//   supports:  - {node: REF | nodes: NODES, fix: [x, y, z], [displacement]}
+//              displacement: the fixed dofs' values in the order of fix, or the full [x, y, z];
+//              reached at load factor 1
+//   loads:     {[gravity: [gx, gy, gz] | {g: G} meaning (0, 0, -G)],
+//              [nodal: - {node: REF | nodes: NODES, force: [fx, fy, fz]}]}
+//   steps:     - relax: {[name], [load_factor], [tolerance], [damping], [initial_damping_factor],
+//                        [decrement], [residual_tolerance], [max_steps], [max_iterations]}
+//              - static: {[name], [load_factor], [increments], [newton: full | modified],
+//                         [stiffness_update], [tolerance], [residual_tolerance],
+//                         [criterion: displacement | residual | both], [max_iterations]}
+//              defaults: solve::RelaxationOptions, solve::StaticOptions
+//   summary:   NAME: {quantity, [node: REF], [element: ID, end: first | last], [scale: 1],
+//                     [step: NAME or 1-based index; default: the last step]}
+//              quantity: displacement_{x,y,z} | position_{x,y,z} | reaction_{x,y,z} |
+//                        reaction_magnitude | end_tension | max_tension
+//
+// REF, one node: an id, LINE.start, LINE.end, or LINE.middle (a line with an odd node count).
+// NODES: `all`, a node set, a line's name (its nodes), a REF, or a list of these.
+// Model nodes are the explicit nodes in ascending id, then the lines' generated nodes
+// (Case::node_ids maps them back to ids). Element ids (summary `element:`) are 1-based in file
+// order: explicit elements first, then the elements of each line in order; model element i is
+// element id i + 1.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "apps/case/case.hpp"
+
+namespace flexmoor::app {
+
+// Reads and validates a case file; throws CaseError listing every problem.
+Case readCase(const std::string& path);
+
+// An existing file as it is; else the case `<name>.yaml` anywhere under FLEXMOOR_CASES_DIR.
+// Throws std::runtime_error naming the available cases when there is none (or more than one).
+std::string resolveCasePath(const std::string& name_or_path);
+
+// (name, title) of every .yaml under FLEXMOOR_CASES_DIR, sorted by name; the name is the file's
+// stem, the title its `title:` key.
+std::vector<std::pair<std::string, std::string>> listCases();
+
+}  // namespace flexmoor::app

@@ -1,0 +1,47 @@
+#include "apps/case/diagnostics.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+
+namespace flexmoor::app {
+namespace {
+
+std::string joinLines(const std::vector<std::string>& messages) {
+  std::string text;
+  for (const std::string& m : messages) text += (text.empty() ? "" : "\n") + ("flexmoor: " + m);
+  return text;
+}
+
+}  // namespace
+
+CaseError::CaseError(std::vector<std::string> messages)
+    : std::runtime_error(joinLines(messages)), messages_(std::move(messages)) {}
+
+void Diagnostics::error(int line, const std::string& what) {
+  problems_.push_back(
+      {line, line > 0 ? file_ + ":" + std::to_string(line) + ": " + what : file_ + ": " + what});
+}
+
+void Diagnostics::error(const YAML::Node& at, const std::string& what) { error(lineOf(at), what); }
+
+std::vector<std::string> Diagnostics::messages() const {
+  std::vector<Problem> sorted = problems_;
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const Problem& a, const Problem& b) { return a.line < b.line; });
+  std::vector<std::string> messages;
+  for (Problem& p : sorted) messages.push_back(std::move(p.message));
+  return messages;
+}
+
+void Diagnostics::throwIfAny() const {
+  if (!problems_.empty()) throw CaseError(messages());
+}
+
+int lineOf(const YAML::Node& node) {
+  if (!node.IsDefined()) return 0;
+  const YAML::Mark mark = node.Mark();
+  return mark.is_null() ? 0 : mark.line + 1;
+}
+
+}  // namespace flexmoor::app

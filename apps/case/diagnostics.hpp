@@ -1,0 +1,53 @@
+#pragma once
+// Problems found in a case file, collected so that a reader reports every one of them at once as
+// `FILE:LINE: what is wrong (got X, expected Y)`, then throws a single CaseError.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace YAML {
+class Node;
+}
+
+namespace flexmoor::app {
+
+// Every problem of one case file; what() is one line per problem, each prefixed "flexmoor: ".
+class CaseError : public std::runtime_error {
+ public:
+  explicit CaseError(std::vector<std::string> messages);
+  const std::vector<std::string>& messages() const { return messages_; }
+
+ private:
+  std::vector<std::string> messages_;
+};
+
+class Diagnostics {
+ public:
+  explicit Diagnostics(std::string file) : file_(std::move(file)) {}
+
+  // A problem at a 1-based line (0: the file as a whole).
+  void error(int line, const std::string& what);
+  // A problem at a YAML node (its line is Mark().line + 1).
+  void error(const YAML::Node& at, const std::string& what);
+
+  const std::string& file() const { return file_; }
+  bool empty() const { return problems_.empty(); }
+  // Every message, ordered by line (problems on one line in the order they were found).
+  std::vector<std::string> messages() const;
+
+  // Throws CaseError with every message collected, if there is any.
+  void throwIfAny() const;
+
+ private:
+  struct Problem {
+    int line;
+    std::string message;
+  };
+  std::string file_;
+  std::vector<Problem> problems_;
+};
+
+// 1-based line of a node, or 0 when the node carries no position.
+int lineOf(const YAML::Node& node);
+
+}  // namespace flexmoor::app

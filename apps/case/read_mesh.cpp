@@ -1,0 +1,257 @@
+// nodes:, lines: and elements: of a case file. Model nodes are the explicit nodes in ascending id,
+// then the nodes each line generates; model elements are the explicit elements in file order,
+// then the cable elements of each line in order.
+#include <algorithm>
+
+#include "apps/case/case_builder.hpp"
+#include "libstruct/element/spring_element.hpp"
+
+namespace flexmoor::app {
+namespace {
+
+// One end of a line: `from: [x, y, z]` or `start_node: REF` (and `to` / `end_node`).
+struct LineEnd {
+  Eigen::Vector3d position;
+  int node = -1;  // the attached model node, or -1 for a generated one
+};
+
+std::optional<LineEnd> readLineEnd(CaseBuilder& b, Fields& f, const char* point, const char* node) {
+  const YAML::Node* p = f.find(point);
+  const YAML::Node* n = f.find(node);
+  if (p && n) {
+    b.diag.error(*n, f.path() + ": give either " + point + " or " + node + ", not both");
+    return std::nullopt;
+  }
+  if (!p && !n) {
+    if (f.isMap())
+      b.diag.error(f.node(), f.path() + ": missing key '" + point + "' (or '" + node + "')");
+    return std::nullopt;
+  }
+  if (p) {
+    const auto x = b.in.vector3(*p, f.path(point), kind::kLength);
+    return x ? std::optional<LineEnd>({*x, -1}) : std::nullopt;
+  }
+  const auto attached = nodeRef(b, *n, f.path(node));
+  if (!attached) return std::nullopt;
+  return LineEnd{b.model.reference().col(*attached), *attached};
+}
+
+void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
+  Fields f(b.diag, item, path,
+           {"name", "from", "to", "start_node", "end_node", "elements", "order", "section"});
+  std::string name;
+  if (const YAML::Node* n = f.find("name")) {
+    name = b.in.text(*n, f.path("name")).value_or("");
+    if (!name.empty() && !checkName(b, *n, f.path("name"), name)) name.clear();
+  }
+  const auto start = readLineEnd(b, f, "from", "start_node");
+  const auto end = readLineEnd(b, f, "to", "end_node");
+  const YAML::Node* ne = f.require("elements");
+  const YAML::Node* no = f.require("order");
+  const int elements = ne ? b.in.integer(*ne, f.path("elements"), 1, 1000000).value_or(0) : 0;
+  const int order = no ? b.in.integer(*no, f.path("order"), 2, 4).value_or(0) : 0;
+  const YAML::Node* ns = f.require("section");
+  const SectionSpec* section = ns ? b.section(*ns, f.path("section")) : nullptr;
+  if (!start || !end || elements == 0 || order == 0) {
+    if (!name.empty()) b.broken_node_names.insert(name);
+    return;
+  }
+  if (!((end->position - start->position).norm() > 0.0)) {
+    b.diag.error(item, path +
+                           ": zero length (got the same point at both ends, expected a line "
+                           "of length > 0)");
+    if (!name.empty()) b.broken_node_names.insert(name);
+    return;
+  }
+  // Nodes equally spaced from start to end; generated ones take the next ids in this order.
+  const int count = elements * (order - 1) + 1;
+  std::vector<int> nodes(count);
+  for (int k = 0; k < count; ++k) {
+    const double s = static_cast<double>(k) / (count - 1);
+    if (k == 0 && start->node >= 0)
+      nodes[k] = start->node;
+    else if (k == count - 1 && end->node >= 0)
+      nodes[k] = end->node;
+    else
+      nodes[k] = b.addGeneratedNode((1.0 - s) * start->position + s * end->position, lineOf(item));
+  }
+  if (section)
+    for (int e = 0; e < elements; ++e) {
+      const auto first = nodes.begin() + e * (order - 1);
+      b.line_cables.push_back({std::vector<int>(first, first + order), ns->Scalar()});
+    }
+  if (!name.empty()) b.c.lines[name] = std::move(nodes);
+}
+
+// The nodes of an explicit element: a list of `count_min`..`count_max` distinct node references.
+std::optional<std::vector<int>> elementNodes(CaseBuilder& b, Fields& f, int count_min,
+                                             int count_max) {
+  const YAML::Node* n = f.require("nodes");
+  if (!n) return std::nullopt;
+  const std::string expected = count_min == count_max
+                                   ? std::to_string(count_min)
+                                   : std::to_string(count_min) + " to " + std::to_string(count_max);
+  if (!n->IsSequence() || static_cast<int>(n->size()) < count_min ||
+      static_cast<int>(n->size()) > count_max) {
+    const std::string got =
+        n->IsSequence() ? std::to_string(n->size()) + " nodes" : describeNode(*n);
+    b.diag.error(*n, f.path("nodes") + ": wrong number of nodes (got " + got +
+                         ", expected a list of " + expected + ")");
+    return std::nullopt;
+  }
+  std::vector<int> nodes;
+  bool ok = true;
+  for (size_t i = 0; i < n->size(); ++i) {
+    const auto node = nodeRef(b, (*n)[i], itemPath(f.path("nodes"), i));
+    ok = ok && node.has_value();
+    if (node) nodes.push_back(*node);
+  }
+  if (!ok) return std::nullopt;
+  std::vector<int> sorted = nodes;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+    b.diag.error(*n, f.path("nodes") + ": a node appears twice (expected distinct nodes)");
+    return std::nullopt;
+  }
+  const model::NodalField& X = b.model.reference();
+  if (!((X.col(nodes.back()) - X.col(nodes.front())).norm() > 0.0)) {
+    b.diag.error(*n,
+                 f.path("nodes") + ": the end nodes coincide (expected an element of length > 0)");
+    return std::nullopt;
+  }
+  return nodes;
+}
+
+std::unique_ptr<element::Element> readCable(CaseBuilder& b, Fields& f) {
+  const auto nodes = elementNodes(b, f, 2, 4);
+  const YAML::Node* s = f.require("section");
+  const SectionSpec* section = s ? b.section(*s, f.path("section")) : nullptr;
+  if (!nodes || !section) return nullptr;
+  return element::makeCableElement(*nodes, section->section, section->quadrature);
+}
+
+std::unique_ptr<element::Element> readSpring(CaseBuilder& b, Fields& f) {
+  const auto nodes = elementNodes(b, f, 2, 2);
+  const YAML::Node* k = f.require("stiffness");
+  const auto stiffness =
+      k ? b.in.quantity(*k, f.path("stiffness"), kind::kStiffness, Limit::Positive) : std::nullopt;
+  // A negative rest length tells SpringElement to take the reference distance of its nodes.
+  const double rest = b.in.quantityOr(f, "rest_length", kind::kLength, Limit::NonNegative, -1.0);
+  material::Compression compression = material::Compression::TensionOnly;
+  if (const YAML::Node* c = f.find("compression"))
+    compression =
+        b.in.choice(*c, f.path("compression"), compressionChoices()).value_or(compression);
+  if (!nodes || !stiffness) return nullptr;
+  return std::make_unique<element::SpringElement>((*nodes)[0], (*nodes)[1], *stiffness, rest,
+                                                  compression);
+}
+
+std::unique_ptr<element::Element> readPointMass(CaseBuilder& b, Fields& f) {
+  const YAML::Node* n = f.require("node");
+  const YAML::Node* m = f.require("mass");
+  const auto node = n ? nodeRef(b, *n, f.path("node")) : std::nullopt;
+  const auto mass =
+      m ? b.in.quantity(*m, f.path("mass"), kind::kMass, Limit::Positive) : std::nullopt;
+  if (!node || !mass) return nullptr;
+  return std::make_unique<element::PointMassElement>(*node, *mass);
+}
+
+// One explicit element; its type ("" when it has errors) goes to element_types.
+void readElement(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
+  const std::string type = peekText(item, "type");
+  const std::vector<std::string> cable = {"type", "nodes", "section"};
+  const std::vector<std::string> spring = {"type", "nodes", "stiffness", "rest_length",
+                                           "compression"};
+  const std::vector<std::string> point_mass = {"type", "node", "mass"};
+  const std::vector<std::string> any = {"type",        "nodes",       "section", "stiffness",
+                                        "rest_length", "compression", "node",    "mass"};
+  Fields f(b.diag, item, path,
+           type == "cable"        ? cable
+           : type == "spring"     ? spring
+           : type == "point_mass" ? point_mass
+                                  : any);  // the type itself is reported below
+  std::unique_ptr<element::Element> element;
+  if (type == "cable")
+    element = readCable(b, f);
+  else if (type == "spring")
+    element = readSpring(b, f);
+  else if (type == "point_mass")
+    element = readPointMass(b, f);
+  else if (const YAML::Node* t = f.require("type"))
+    b.in.choice<int>(*t, f.path("type"), {{"cable", 0}, {"spring", 1}, {"point_mass", 2}});
+  b.element_types.push_back(element ? type : "");
+  if (element) b.model.addElement(std::move(element));
+}
+
+}  // namespace
+
+int CaseBuilder::addGeneratedNode(const Eigen::Vector3d& position, int line) {
+  const int id = largestId() + 1;
+  const int node = model.addNode(position);
+  node_of_id[id] = node;
+  c.node_ids.push_back(id);
+  node_line.push_back(line);
+  return node;
+}
+
+void readNodes(CaseBuilder& b, const YAML::Node& n) {
+  struct Explicit {
+    Eigen::Vector3d position;
+    int line;
+  };
+  std::map<int, Explicit> nodes;
+  for (const MapEntry& e : mapEntries(b.diag, n, "nodes")) {
+    const std::string path = childPath("nodes", e.key);
+    const auto id = b.in.integer(e.key_node, path + " (a node id)", 1);
+    const auto x = b.in.vector3(e.value, path, kind::kLength);
+    if (id && nodes.count(*id)) {
+      b.diag.error(e.key_node, path + ": repeated node id (first given on line " +
+                                   std::to_string(nodes[*id].line) + ")");
+    } else if (id && x) {
+      nodes[*id] = {*x, lineOf(e.key_node)};
+    } else if (id) {
+      b.broken_node_ids.insert(*id);
+    }
+  }
+  for (const auto& [id, node] : nodes) {
+    b.node_of_id[id] = b.model.addNode(node.position);
+    b.c.node_ids.push_back(id);
+    b.node_line.push_back(node.line);
+  }
+}
+
+void readLines(CaseBuilder& b, const YAML::Node& n) {
+  const std::vector<YAML::Node> items = listItems(b.diag, n, "lines");
+  for (size_t i = 0; i < items.size(); ++i) readLine(b, items[i], itemPath("lines", i));
+}
+
+void readElements(CaseBuilder& b, const YAML::Node& n) {
+  const std::vector<YAML::Node> items = listItems(b.diag, n, "elements");
+  for (size_t i = 0; i < items.size(); ++i) readElement(b, items[i], itemPath("elements", i));
+  for (PendingCable& p : b.line_cables) {
+    const SectionSpec& s = *b.sections.at(p.section);
+    b.model.addElement(element::makeCableElement(std::move(p.nodes), s.section, s.quadrature));
+    b.element_types.push_back("cable");
+  }
+}
+
+void checkConnectivity(CaseBuilder& b) {
+  std::vector<bool> held(b.model.nodeCount(), false);
+  for (const auto& e : b.model.elements())
+    if (e->typeName() != "point_mass")
+      for (int node : e->nodes()) held[node] = true;
+  const char* axis[] = {"x", "y", "z"};
+  for (int node = 0; node < b.model.nodeCount(); ++node) {
+    std::string free;
+    for (int k = 0; k < 3; ++k)
+      if (!b.model.isConstrained(node, k))
+        free += (free.empty() ? "" : ", ") + std::string(axis[k]);
+    if (held[node] || free.empty()) continue;
+    b.diag.error(b.node_line[node], "node " + std::to_string(b.c.node_ids[node]) +
+                                        ": no cable or spring holds it and its " + free +
+                                        " are not fixed (expected it connected or fixed: its "
+                                        "stiffness would be singular)");
+  }
+}
+
+}  // namespace flexmoor::app

@@ -1,0 +1,73 @@
+#pragma once
+// Physical units of case files. A value is either a plain number, taken to be in the case's
+// consistent system already, or "NUMBER UNIT" ("0.163 in", "500000 psi", "0.031056 slug/ft^3"),
+// converted once on reading into the case's system (US: ft, slug, s; SI: m, kg, s).
+//
+// A unit expression is a product of base units with optional integer exponents, '*' or a space
+// multiplying and '/' dividing the factor that follows it; parentheses group:
+//   "lbf/ft^2", "slug/ft^3", "kg m^-3", "lbf s^2/ft", "N/(m s)", "1/s".
+// Base units: m mm cm km in ft | kg g t slug lbm | s min h | N kN MN lbf lb kip |
+// Pa kPa MPa GPa psi psf ksi ksf | rad deg Hz. Conversion factors are exact: 1 ft = 0.3048 m,
+// 1 in = 0.0254 m, 1 lbm = 0.45359237 kg, 1 lbf = 4.4482216152605 N, 1 slug = 1 lbf s^2/ft.
+#include <stdexcept>
+#include <string>
+
+#include "apps/case/case.hpp"
+
+namespace flexmoor::app {
+
+// Exponents of mass, length and time.
+struct Dimension {
+  int mass = 0, length = 0, time = 0;
+  bool operator==(const Dimension& o) const {
+    return mass == o.mass && length == o.length && time == o.time;
+  }
+  bool operator!=(const Dimension& o) const { return !(*this == o); }
+};
+
+// What a case field holds, named for messages ("expected a pressure").
+struct QuantityKind {
+  const char* name;  // with its article: "a pressure", "an area"
+  Dimension dimension;
+};
+
+namespace kind {
+inline constexpr QuantityKind kNumber{"a plain number", {0, 0, 0}};
+inline constexpr QuantityKind kLength{"a length", {0, 1, 0}};
+inline constexpr QuantityKind kArea{"an area", {0, 2, 0}};
+inline constexpr QuantityKind kMass{"a mass", {1, 0, 0}};
+inline constexpr QuantityKind kTime{"a time", {0, 0, 1}};
+inline constexpr QuantityKind kForce{"a force", {1, 1, -2}};
+inline constexpr QuantityKind kPressure{"a pressure", {1, -1, -2}};
+inline constexpr QuantityKind kDensity{"a density (mass per volume)", {1, -3, 0}};
+inline constexpr QuantityKind kAcceleration{"an acceleration", {0, 1, -2}};
+inline constexpr QuantityKind kStiffness{"a force per length", {1, 0, -2}};
+}  // namespace kind
+
+// A malformed value or unit expression, or a unit of the wrong dimension.
+class UnitError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// A unit expression as a multiple of the SI base units.
+struct Unit {
+  double si_factor = 1.0;  // value in SI of one of this unit
+  Dimension dimension;
+};
+
+// Parses a unit expression ("lbf/ft^2"); throws UnitError naming what it could not read.
+Unit parseUnit(const std::string& expression);
+
+// Size, in SI, of one unit of `dimension` in the case system (US: 0.3048 for a length).
+double systemScale(Dimension dimension, UnitSystem system);
+
+// Reads "NUMBER" or "NUMBER UNIT" as a value of `expected` in the case system. Throws UnitError
+// for text that is not a number, an unknown unit, or a unit of another dimension
+// ("expected a pressure, got 'ft' (a length)").
+double parseValue(const std::string& text, const QuantityKind& expected, UnitSystem system);
+
+// "a length", "a pressure" when the dimension is one of the named kinds, else "kg^a m^b s^c".
+std::string describeDimension(Dimension dimension);
+
+}  // namespace flexmoor::app

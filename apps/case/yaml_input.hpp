@@ -1,0 +1,115 @@
+#pragma once
+// Checked access to the values of a YAML case file. Each reader reports what is wrong to the
+// Diagnostics, with the value's line and its path in the file ("materials.steel.E"), and returns
+// std::nullopt so that the caller carries on and the file's other problems are found too.
+#include <yaml-cpp/yaml.h>
+
+#include <Eigen/Core>
+#include <climits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "apps/case/diagnostics.hpp"
+#include "apps/case/units.hpp"
+
+namespace flexmoor::app {
+
+// "steps[2].static" + "increments" -> "steps[2].static.increments"; list items are 1-based.
+std::string childPath(const std::string& path, const std::string& key);
+std::string itemPath(const std::string& path, size_t index);
+
+// What a node holds, for "(got ...)": 'text', a list, a map or nothing.
+std::string describeNode(const YAML::Node& n);
+
+// One entry of a YAML map, with its key's node for the key's line.
+struct MapEntry {
+  std::string key;
+  YAML::Node key_node;
+  YAML::Node value;
+};
+
+// The entries of a map in file order; a null value counts as an empty map. Reports a value that
+// is not a map, keys that are not scalars, and repeated keys (their first occurrence is kept).
+std::vector<MapEntry> mapEntries(Diagnostics& diag, const YAML::Node& map, const std::string& path);
+
+// The items of a list; a null value counts as an empty list. Reports a value that is not a list.
+std::vector<YAML::Node> listItems(Diagnostics& diag, const YAML::Node& list,
+                                  const std::string& path);
+
+// The text of `key` in a map, or "" (to choose which keys apply before checking them).
+std::string peekText(const YAML::Node& map, const char* key);
+
+// A map with a fixed set of keys. Unknown keys are reported on construction, with the allowed
+// keys and the nearest one ("did you mean 'elements'?").
+class Fields {
+ public:
+  Fields(Diagnostics& diag, const YAML::Node& map, std::string path,
+         std::vector<std::string> allowed);
+
+  const YAML::Node* find(const std::string& key) const;  // nullptr when absent
+  const YAML::Node* require(const std::string& key);     // reports a missing key in a map
+  std::string path(const std::string& key) const { return childPath(path_, key); }
+  const std::string& path() const { return path_; }
+  const YAML::Node& node() const { return map_; }
+  bool isMap() const { return is_map_; }
+
+ private:
+  Diagnostics& diag_;
+  YAML::Node map_;
+  std::string path_;
+  std::vector<MapEntry> entries_;
+  bool is_map_;  // a map or null; else already reported, and its keys are not asked for again
+};
+
+enum class Limit { Any, Positive, NonNegative };
+
+// Scalar readers in one unit system.
+class Input {
+ public:
+  Input(Diagnostics& diag, UnitSystem units) : diag(diag), units(units) {}
+
+  // A number, or "NUMBER UNIT" of the right dimension, converted to the case's system.
+  std::optional<double> quantity(const YAML::Node& n, const std::string& path,
+                                 const QuantityKind& kind, Limit limit = Limit::Any);
+  // A whole number in [min, max].
+  std::optional<int> integer(const YAML::Node& n, const std::string& path, int min,
+                             int max = INT_MAX);
+  // A scalar's text.
+  std::optional<std::string> text(const YAML::Node& n, const std::string& path);
+  // [x, y, z], each a quantity of `kind`.
+  std::optional<Eigen::Vector3d> vector3(const YAML::Node& n, const std::string& path,
+                                         const QuantityKind& kind);
+  // One of a fixed set of words.
+  template <class T>
+  std::optional<T> choice(const YAML::Node& n, const std::string& path,
+                          const std::vector<std::pair<std::string, T>>& options);
+
+  // Optional field helpers: the default when the key is absent.
+  double quantityOr(const Fields& f, const std::string& key, const QuantityKind& kind, Limit limit,
+                    double fallback);
+  int integerOr(const Fields& f, const std::string& key, int min, int fallback);
+
+  Diagnostics& diag;
+  UnitSystem units;
+
+ private:
+  void reportChoice(const YAML::Node& n, const std::string& path,
+                    const std::vector<std::string>& words);
+};
+
+template <class T>
+std::optional<T> Input::choice(const YAML::Node& n, const std::string& path,
+                               const std::vector<std::pair<std::string, T>>& options) {
+  const std::optional<std::string> word = text(n, path);
+  if (!word) return std::nullopt;
+  for (const auto& [name, value] : options)
+    if (*word == name) return value;
+  std::vector<std::string> words;
+  for (const auto& option : options) words.push_back(option.first);
+  reportChoice(n, path, words);
+  return std::nullopt;
+}
+
+}  // namespace flexmoor::app
