@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "libstruct/model/model.hpp"
+#include "libstruct/solve/modal.hpp"
 #include "libstruct/solve/solver_options.hpp"
 
 namespace flexmoor::app {
@@ -25,11 +26,14 @@ struct SourceLocation {
 };
 
 struct StepSpec {
-  enum class Kind { Relax, Static };
+  enum class Kind { Relax, Static, Modes, Dynamic };
   Kind kind = Kind::Static;
-  std::string name;  // "relax", "static", or the step's own `name:`
+  std::string name;  // "relax", "static", "modes", "dynamic", or the step's own `name:`
   solve::RelaxationOptions relax;
   solve::StaticOptions statics;
+  solve::ModalOptions modes;
+  solve::DynamicOptions dynamic;
+  int output_every = 1;  // dynamic: write every N-th accepted time step (the last one always)
   SourceLocation where;
 };
 
@@ -42,6 +46,10 @@ struct SummarySpec {
     ReactionMagnitude,  // |reaction| at a node
     EndTension,         // axial force at one end of an element
     MaxTension,         // largest axial force over all integration points and element ends
+    Frequency,          // omega of mode `mode` (1-based) of a modes step, rad/s
+    ResultantMax,       // larger principal membrane stress resultant, mean over the element's
+                        // integration points (force per current length)
+    ResultantMin,       // smaller principal resultant, likewise
   };
   std::string name;
   Quantity quantity = Quantity::Displacement;
@@ -49,6 +57,7 @@ struct SummarySpec {
   int element = -1;    // 0-based model element
   int end = 0;         // 0 = first node of the element, 1 = last
   int component = 0;   // 0, 1, 2 = x, y, z
+  int mode = 0;        // Frequency: 1-based mode number
   double scale = 1.0;  // e.g. -1 to report a sag as positive
   int step = -1;       // 0-based step index; -1 = the last step
   std::string unit;    // unit name in the case's system ("ft", "lbf")
@@ -66,6 +75,7 @@ struct Case {
   std::map<std::string, std::vector<int>> node_sets;  // named sets, 0-based nodes
   std::vector<int> node_ids;  // the file's id of each model node (explicit or generated)
   std::map<std::string, std::vector<int>> lines;  // nodes of each named line, start to end
+  std::map<std::string, std::vector<int>> element_sets;  // named groups (surfaces, lines), 0-based
 };
 
 }  // namespace flexmoor::app
