@@ -1,0 +1,258 @@
+#include "apps/output/netcdf_writer.hpp"
+
+#include <ctime>
+#include <stdexcept>
+
+#include "apps/output/finite_value.hpp"
+
+namespace flexmoor::app {
+namespace {
+
+constexpr const char* kAxis[3] = {"_x", "_y", "_z"};
+
+std::string utcNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+std::string unitSystemName(UnitSystem system) {
+  const UnitNames u = unitNames(system);
+  return std::string(system == UnitSystem::US ? "US" : "SI") + " (" + u.length + ", " + u.mass +
+         ", " + u.time + ", " + u.force + ")";
+}
+
+}  // namespace
+
+// The values of one variable in the current record, gathered and checked before any is written.
+struct NetcdfWriter::Slab {
+  int variable;
+  std::vector<size_t> start, count;
+  std::vector<double> values;
+};
+
+NetcdfWriter::NetcdfWriter(const std::string& path, const model::Model& model, const Case& c)
+    : file_(path),
+      node_count_(model.nodeCount()),
+      element_count_(model.elementCount()),
+      reference_(model.reference()),
+      force_unit_(unitNames(c.units).force) {
+  if (node_count_ == 0 || element_count_ == 0)
+    throw std::runtime_error(path + ": cannot write results of a model without nodes or elements");
+  defineHeader(model, c);
+  file_.endDefine();
+  writeMesh(model);
+  file_.sync();
+}
+
+void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
+  const std::string version = FLEXMOOR_VERSION;
+  file_.putAttribute(NC_GLOBAL, "Conventions", "CF-1.8");
+  file_.putAttribute(NC_GLOBAL, "title", c.title.empty() ? "flexmoor case " + c.name : c.title);
+  file_.putAttribute(NC_GLOBAL, "source", "flexmoor " + version);
+  file_.putAttribute(
+      NC_GLOBAL, "history",
+      utcNow() + ": flexmoor " + version + " run of " + (c.file.empty() ? c.name : c.file));
+  file_.putAttribute(NC_GLOBAL, "case_name", c.name);
+  file_.putAttribute(NC_GLOBAL, "unit_system", unitSystemName(c.units));
+
+  size_t element_nodes = 0;
+  for (const auto& e : model.elements()) element_nodes += e->nodes().size();
+  dim_node_ = file_.defineDimension("node", node_count_);
+  dim_element_ = file_.defineDimension("element", element_count_);
+  dim_end_ = file_.defineDimension("end", 2);
+  dim_element_node_ = file_.defineDimension("element_node", element_nodes);
+  dim_name_ = file_.defineDimension("name_strlen", kNameLength);
+  dim_step_ = file_.defineDimension("step", NC_UNLIMITED);
+
+  const UnitNames u = unitNames(c.units);
+  for (int k = 0; k < 3; ++k)
+    node_coordinate_[k] = file_.defineVariable(
+        std::string("node") + kAxis[k], NC_DOUBLE, {dim_node_},
+        std::string(1, "xyz"[k]) + " coordinate of the node in the reference configuration",
+        u.length);
+  element_type_ =
+      file_.defineVariable("element_type", NC_CHAR, {dim_element_, dim_name_}, "element type");
+  element_node_count_ = file_.defineVariable("element_node_count", NC_INT, {dim_element_},
+                                             "number of nodes of the element");
+  file_.putAttribute(element_node_count_, "sample_dimension", "element_node");
+  element_nodes_ = file_.defineVariable(
+      "element_nodes", NC_INT, {dim_element_node_},
+      "nodes of each element in element order (first, interior..., last), 1-based");
+  file_.putAttribute(element_nodes_, "start_index", 1);
+
+  step_number_ = file_.defineVariable("step_number", NC_INT, {dim_step_},
+                                      "analysis step of the case this record closes, 1-based");
+  step_name_ = file_.defineVariable("step_name", NC_CHAR, {dim_step_, dim_name_},
+                                    "name of the analysis step");
+  time_ = file_.defineVariable("time", NC_DOUBLE, {dim_step_}, "time", u.time);
+  load_factor_ = file_.defineVariable("load_factor", NC_DOUBLE, {dim_step_}, "load factor", "1");
+
+  const std::vector<int> step_node = {dim_step_, dim_node_};
+  displacement_ = defineVector3("displacement", step_node, "displacement", u.length);
+  position_ =
+      defineVector3("position", step_node, "coordinate in the current configuration", u.length);
+  velocity_ = defineVector3("velocity", step_node, "velocity", u.length + "/" + u.time);
+  reaction_ = defineVector3("reaction", step_node, "support reaction (zero at free dofs)", u.force);
+  tension_end_ =
+      file_.defineVariable("tension_end", NC_DOUBLE, {dim_step_, dim_element_, dim_end_},
+                           "axial force at the first and the last node of the element", u.force);
+}
+
+NetcdfWriter::Vector3Variable NetcdfWriter::defineVector3(const std::string& name,
+                                                          const std::vector<int>& dimensions,
+                                                          const std::string& long_name,
+                                                          const std::string& units) {
+  Vector3Variable v{name, {}};
+  for (int k = 0; k < 3; ++k)
+    v.id[k] = file_.defineVariable(name + kAxis[k], NC_DOUBLE, dimensions,
+                                   std::string(1, "xyz"[k]) + " " + long_name, units);
+  return v;
+}
+
+void NetcdfWriter::writeMesh(const model::Model& model) {
+  const size_t nodes = node_count_;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<double> x(nodes);
+    for (size_t n = 0; n < nodes; ++n) {
+      x[n] = reference_(k, n);
+      requireFinite(x[n], path(), [&] {
+        return "node" + std::string(kAxis[k]) + "[node " + std::to_string(n) + "]";
+      });
+    }
+    file_.put(node_coordinate_[k], {0}, {nodes}, x.data());
+  }
+  std::vector<int> counts, nodes_1based;
+  for (int e = 0; e < element_count_; ++e) {
+    const element::Element& element = model.element(e);
+    putText(element_type_, e, element.typeName());
+    counts.push_back(static_cast<int>(element.nodes().size()));
+    for (const int n : element.nodes()) nodes_1based.push_back(n + 1);
+  }
+  file_.put(element_node_count_, {0}, {counts.size()}, counts.data());
+  file_.put(element_nodes_, {0}, {nodes_1based.size()}, nodes_1based.data());
+}
+
+void NetcdfWriter::definePoints(const ResultFrame& first) {
+  std::vector<int> point_element;
+  for (int e = 0; e < element_count_; ++e) {
+    element_points_.push_back(static_cast<int>(first.elements[e].point_tension.size()));
+    point_element.insert(point_element.end(), element_points_.back(), e + 1);
+  }
+  file_.redefine();
+  dim_point_ = file_.defineDimension("point", point_element.size());
+  element_point_count_ = file_.defineVariable("element_point_count", NC_INT, {dim_element_},
+                                              "number of integration points of the element");
+  file_.putAttribute(element_point_count_, "sample_dimension", "point");
+  point_element_ = file_.defineVariable("point_element", NC_INT, {dim_point_},
+                                        "element of the integration point, 1-based");
+  tension_point_ = file_.defineVariable(
+      "tension_point", NC_DOUBLE, {dim_step_, dim_point_},
+      "axial force at the integration points, element by element in element order", force_unit_);
+  file_.endDefine();
+  file_.put(element_point_count_, {0}, {element_points_.size()}, element_points_.data());
+  file_.put(point_element_, {0}, {point_element.size()}, point_element.data());
+}
+
+void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
+  const auto fail = [&](const std::string& what) {
+    throw std::runtime_error(path() + ": cannot write step \"" + frame.step_name + "\": " + what);
+  };
+  if (!frame.state) fail("the frame has no state");
+  if (frame.state->displacement.cols() != node_count_ ||
+      frame.state->velocity.cols() != node_count_ || frame.reactions.cols() != node_count_)
+    fail("its nodal fields do not have the model's " + std::to_string(node_count_) + " nodes");
+  if (static_cast<int>(frame.elements.size()) != element_count_)
+    fail("it has " + std::to_string(frame.elements.size()) + " element results for " +
+         std::to_string(element_count_) + " elements");
+  if (frame.step_name.size() > kNameLength)
+    fail("the step name is longer than " + std::to_string(kNameLength) + " characters");
+  for (size_t e = 0; e < element_points_.size(); ++e)
+    if (static_cast<int>(frame.elements[e].point_tension.size()) != element_points_[e])
+      fail("element " + std::to_string(e) + " reports " +
+           std::to_string(frame.elements[e].point_tension.size()) +
+           " integration points; the file's layout has " + std::to_string(element_points_[e]));
+}
+
+void NetcdfWriter::gatherNodal(std::vector<Slab>& slabs, const Vector3Variable& v,
+                               const model::NodalField& field) const {
+  const size_t nodes = node_count_;
+  for (int k = 0; k < 3; ++k) {
+    Slab s{v.id[k], {records_, 0}, {1, nodes}, std::vector<double>(nodes)};
+    for (size_t n = 0; n < nodes; ++n) {
+      s.values[n] = field(k, n);
+      requireFinite(s.values[n], path(), [&] {
+        return v.name + kAxis[k] + "[step " + std::to_string(records_) + ", node " +
+               std::to_string(n) + "]";
+      });
+    }
+    slabs.push_back(std::move(s));
+  }
+}
+
+void NetcdfWriter::gatherTensions(std::vector<Slab>& slabs, const ResultFrame& frame) const {
+  const size_t elements = element_count_;
+  Slab ends{tension_end_, {records_, 0, 0}, {1, elements, 2}, {}};
+  Slab points{tension_point_, {records_, 0}, {1, 0}, {}};
+  for (size_t e = 0; e < elements; ++e) {
+    const element::ElementResult& r = frame.elements[e];
+    for (int end = 0; end < 2; ++end) {
+      requireFinite(r.end_tension[end], path(), [&] {
+        return "tension_end[step " + std::to_string(records_) + ", element " + std::to_string(e) +
+               ", end " + std::to_string(end) + "]";
+      });
+      ends.values.push_back(r.end_tension[end]);
+    }
+    for (const double t : r.point_tension) {
+      requireFinite(t, path(), [&] {
+        return "tension_point[step " + std::to_string(records_) + ", point " +
+               std::to_string(points.values.size()) + "] (element " + std::to_string(e) + ")";
+      });
+      points.values.push_back(t);
+    }
+  }
+  points.count[1] = points.values.size();
+  slabs.push_back(std::move(ends));
+  slabs.push_back(std::move(points));
+}
+
+void NetcdfWriter::write(const ResultFrame& frame) {
+  requireMatches(frame);
+  const model::State& s = *frame.state;
+  std::vector<Slab> slabs;
+  const auto gatherScalar = [&](int variable, const char* name, double value) {
+    requireFinite(value, path(),
+                  [&] { return std::string(name) + "[step " + std::to_string(records_) + "]"; });
+    slabs.push_back({variable, {records_}, {1}, {value}});
+  };
+  gatherScalar(time_, "time", s.time);
+  gatherScalar(load_factor_, "load_factor", s.load_factor);
+  gatherNodal(slabs, displacement_, s.displacement);
+  gatherNodal(slabs, position_, reference_ + s.displacement);
+  gatherNodal(slabs, velocity_, s.velocity);
+  gatherNodal(slabs, reaction_, frame.reactions);
+  if (dim_point_ < 0) definePoints(frame);
+  gatherTensions(slabs, frame);
+
+  const int step_number = frame.step_index + 1;
+  file_.put(step_number_, {records_}, {1}, &step_number);
+  putText(step_name_, records_, frame.step_name);
+  for (const Slab& slab : slabs)
+    file_.put(slab.variable, slab.start, slab.count, slab.values.data());
+  ++records_;
+  file_.sync();
+}
+
+void NetcdfWriter::putText(int variable, size_t index, const std::string& text) {
+  if (text.size() > kNameLength)
+    throw std::runtime_error(path() + ": \"" + text + "\" is longer than name_strlen (" +
+                             std::to_string(kNameLength) + ")");
+  std::string padded = text;
+  padded.resize(kNameLength, '\0');
+  file_.put(variable, {index, 0}, {1, kNameLength}, padded.data());
+}
+
+}  // namespace flexmoor::app

@@ -1,0 +1,82 @@
+#pragma once
+// DIR/<case>.nc: the results of a run in netCDF-4, CF-1.8 style (every variable has `long_name`
+// and, when it has one, `units` in the case's unit system), streamed one record per solved step.
+//
+// Dimensions: node, element, end (2), element_node (all nodes of all elements), point (all
+// integration points of all elements; defined with the first record, whose element results give
+// the layout), name_strlen, and the record dimension step.
+//
+// Mesh: node_x/_y/_z (reference coordinates), element_type (name), connectivity as a CF
+// contiguous ragged array element_node_count + element_nodes (1-based nodes along the element),
+// and the integration points as element_point_count + point_element (1-based element).
+//
+// Per step: step_number (1-based step of the case), step_name, time, load_factor,
+// displacement_/position_/velocity_/reaction_x/_y/_z (step, node), tension_end (step, element,
+// end), tension_point (step, point).
+//
+// Each write is flushed to disk (nc_sync), so a run that is killed keeps every finished record.
+// No NaN or infinity is ever written: a frame holding one is refused as a whole.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "apps/case/case.hpp"
+#include "apps/output/netcdf_file.hpp"
+#include "apps/output/result_frame.hpp"
+
+namespace flexmoor::app {
+
+class NetcdfWriter {
+ public:
+  // Creates (or replaces) `path` and writes the header and the mesh of `model`; the global
+  // attributes and units come from `c`. Throws std::runtime_error naming the path and the netCDF
+  // error when a call fails.
+  NetcdfWriter(const std::string& path, const model::Model& model, const Case& c);
+
+  // Appends one step record and flushes the file. Throws std::runtime_error, before writing any
+  // of the record, when the frame does not match the model or the point layout of the first
+  // frame, when a value is NaN or infinite (naming the variable and its indices), or when the
+  // step name is longer than name_strlen.
+  void write(const ResultFrame& frame);
+
+  size_t records() const { return records_; }
+  const std::string& path() const { return file_.path(); }
+
+  static constexpr size_t kNameLength = 128;  // name_strlen
+
+ private:
+  struct Vector3Variable {
+    std::string name;  // variable names are name + "_x", "_y", "_z"
+    std::array<int, 3> id;
+  };
+  struct Slab;  // one variable's part of a record, checked before anything is written
+
+  void defineHeader(const model::Model& model, const Case& c);
+  Vector3Variable defineVector3(const std::string& name, const std::vector<int>& dimensions,
+                                const std::string& long_name, const std::string& units);
+  void writeMesh(const model::Model& model);
+  void definePoints(const ResultFrame& first);
+  void requireMatches(const ResultFrame& frame) const;
+  void gatherNodal(std::vector<Slab>& slabs, const Vector3Variable& v,
+                   const model::NodalField& field) const;
+  void gatherTensions(std::vector<Slab>& slabs, const ResultFrame& frame) const;
+  void putText(int variable, size_t index, const std::string& text);
+
+  NetcdfFile file_;
+  int node_count_ = 0;
+  int element_count_ = 0;
+  model::NodalField reference_;  // for position = reference + displacement
+  std::string force_unit_;
+  std::vector<int> element_points_;  // integration points per element, from the first frame
+  size_t records_ = 0;
+
+  int dim_step_ = -1, dim_node_ = -1, dim_element_ = -1, dim_end_ = -1, dim_name_ = -1;
+  int dim_element_node_ = -1, dim_point_ = -1;
+  std::array<int, 3> node_coordinate_{};
+  int element_type_ = -1, element_node_count_ = -1, element_nodes_ = -1;
+  int step_number_ = -1, step_name_ = -1, time_ = -1, load_factor_ = -1;
+  Vector3Variable displacement_, position_, velocity_, reaction_;
+  int tension_end_ = -1, tension_point_ = -1, element_point_count_ = -1, point_element_ = -1;
+};
+
+}  // namespace flexmoor::app

@@ -1,0 +1,61 @@
+#include "apps/output/summary_quantities.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace flexmoor::app {
+namespace {
+
+void requireIndex(int index, int count, const SummarySpec& spec, const char* what) {
+  if (index < 0 || index >= count)
+    throw std::out_of_range("summary \"" + spec.name + "\": " + what + " " + std::to_string(index) +
+                            " is out of range (0.." + std::to_string(count - 1) + ")");
+}
+
+void requireNodeComponent(const SummarySpec& spec, const model::Model& model) {
+  requireIndex(spec.node, model.nodeCount(), spec, "node");
+  requireIndex(spec.component, 3, spec, "component");
+}
+
+double maxTension(const SummarySpec& spec, const ResultFrame& frame) {
+  if (frame.elements.empty())
+    throw std::out_of_range("summary \"" + spec.name + "\": the model has no elements");
+  double t = -std::numeric_limits<double>::infinity();
+  for (const element::ElementResult& r : frame.elements) {
+    for (const double p : r.point_tension) t = std::max(t, p);
+    t = std::max({t, r.end_tension[0], r.end_tension[1]});
+  }
+  return t;
+}
+
+double unscaled(const SummarySpec& spec, const model::Model& model, const ResultFrame& frame) {
+  using Q = SummarySpec::Quantity;
+  const int n = spec.node, k = spec.component;
+  switch (spec.quantity) {
+    case Q::Displacement: requireNodeComponent(spec, model); return frame.state->displacement(k, n);
+    case Q::Position:
+      requireNodeComponent(spec, model);
+      return model.reference()(k, n) + frame.state->displacement(k, n);
+    case Q::Reaction: requireNodeComponent(spec, model); return frame.reactions(k, n);
+    case Q::ReactionMagnitude:
+      requireIndex(n, model.nodeCount(), spec, "node");
+      return frame.reactions.col(n).norm();
+    case Q::EndTension:
+      requireIndex(spec.element, static_cast<int>(frame.elements.size()), spec, "element");
+      requireIndex(spec.end, 2, spec, "end");
+      return frame.elements[spec.element].end_tension[spec.end];
+    case Q::MaxTension: return maxTension(spec, frame);
+  }
+  throw std::logic_error("summary \"" + spec.name + "\": unknown quantity");
+}
+
+}  // namespace
+
+double evaluateSummary(const SummarySpec& spec, const model::Model& model,
+                       const ResultFrame& frame) {
+  return spec.scale * unscaled(spec, model, frame);
+}
+
+}  // namespace flexmoor::app

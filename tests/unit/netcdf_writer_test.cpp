@@ -1,0 +1,265 @@
+// NetcdfWriter: the file it streams, read back through the netCDF C API.
+#include "apps/output/netcdf_writer.hpp"
+
+#include <gtest/gtest.h>
+#include <netcdf.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "libstruct/element/cable_element.hpp"
+#include "libstruct/material/cable_material.hpp"
+
+namespace flexmoor::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Three nodes along x (0, 5, 10 ft) joined by one three-node cable element.
+Case threeNodeCableCase() {
+  Case c;
+  c.name = "writer-test";
+  c.title = "one three-node cable";
+  c.file = "writer-test.yaml";
+  c.units = UnitSystem::US;
+  c.model = std::make_unique<model::Model>();
+  for (int n = 0; n < 3; ++n) c.model->addNode(Eigen::Vector3d(5.0 * n, 0.0, 0.0));
+  element::CableSection section;
+  section.area = 0.1;
+  section.density = 0.03;
+  section.material =
+      std::make_shared<material::LinearElasticCable>(1.0e6, material::Compression::TensionOnly);
+  c.model->addElement(element::makeCableElement({0, 1, 2}, section));
+  return c;
+}
+
+// A state whose values encode the step, node and component: u = step + node / 10 + k / 100.
+model::State stateOfStep(int step) {
+  model::State s(3);
+  for (int n = 0; n < 3; ++n)
+    for (int k = 0; k < 3; ++k) {
+      s.displacement(k, n) = step + 0.1 * n + 0.01 * k;
+      s.velocity(k, n) = -s.displacement(k, n);
+    }
+  s.time = 0.5 * step;
+  s.load_factor = 0.25 * step;
+  return s;
+}
+
+ResultFrame frameOf(int step, const model::State& s) {
+  ResultFrame f;
+  f.step_index = step;
+  f.step_name = step == 0 ? "relax" : "static";
+  f.state = &s;
+  f.elements.resize(1);
+  f.elements[0].point_tension = {10.0 + step, 11.0 + step, 12.0 + step};
+  f.elements[0].end_tension[0] = 9.5 + step;
+  f.elements[0].end_tension[1] = 12.5 + step;
+  f.reactions = model::NodalField::Zero(3, 3);
+  f.reactions(2, 0) = -3.0 - step;
+  return f;
+}
+
+// Read-only view of a netCDF file, failing the test on any netCDF error.
+class Reader {
+ public:
+  explicit Reader(const std::string& path) { expectOk(nc_open(path.c_str(), NC_NOWRITE, &id_)); }
+  ~Reader() { nc_close(id_); }
+
+  size_t dimension(const char* name) const {
+    int dim = -1;
+    size_t length = 0;
+    expectOk(nc_inq_dimid(id_, name, &dim));
+    expectOk(nc_inq_dimlen(id_, dim, &length));
+    return length;
+  }
+  int variable(const char* name) const {
+    int var = NC_GLOBAL;
+    expectOk(nc_inq_varid(id_, name, &var));
+    return var;
+  }
+  std::string text(int var, const char* attribute) const {
+    size_t length = 0;
+    expectOk(nc_inq_attlen(id_, var, attribute, &length));
+    std::string value(length, '\0');
+    expectOk(nc_get_att_text(id_, var, attribute, value.data()));
+    return value;
+  }
+  std::string units(const char* name) const { return text(variable(name), "units"); }
+  std::vector<double> doubles(const char* name) const {
+    std::vector<double> v(values(name));
+    expectOk(nc_get_var_double(id_, variable(name), v.data()));
+    return v;
+  }
+  std::vector<int> ints(const char* name) const {
+    std::vector<int> v(values(name));
+    expectOk(nc_get_var_int(id_, variable(name), v.data()));
+    return v;
+  }
+  // Row `index` of a (record, name_strlen) character variable, without its padding.
+  std::string row(const char* name, size_t index) const {
+    std::string s(NetcdfWriter::kNameLength, '\0');
+    const size_t start[2] = {index, 0}, count[2] = {1, NetcdfWriter::kNameLength};
+    expectOk(nc_get_vara_text(id_, variable(name), start, count, s.data()));
+    return s.c_str();
+  }
+
+ private:
+  static void expectOk(int status) { EXPECT_EQ(status, NC_NOERR) << nc_strerror(status); }
+  size_t values(const char* name) const {
+    int dims[NC_MAX_VAR_DIMS], ndims = 0;
+    expectOk(nc_inq_varndims(id_, variable(name), &ndims));
+    expectOk(nc_inq_vardimid(id_, variable(name), dims));
+    size_t total = 1;
+    for (int d = 0; d < ndims; ++d) {
+      size_t length = 0;
+      expectOk(nc_inq_dimlen(id_, dims[d], &length));
+      total *= length;
+    }
+    return total;
+  }
+  int id_ = -1;
+};
+
+class NetcdfWriterTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("flexmoor-netcdf-" + std::to_string(getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+    path_ = (dir_ / "writer-test.nc").string();
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  Case case_ = threeNodeCableCase();
+  model::State first_ = stateOfStep(0), second_ = stateOfStep(1);
+  fs::path dir_;
+  std::string path_;
+};
+
+TEST_F(NetcdfWriterTest, DimensionsMeshAndGlobalAttributesDescribeTheModel) {
+  {
+    NetcdfWriter writer(path_, *case_.model, case_);
+    writer.write(frameOf(0, first_));
+    writer.write(frameOf(1, second_));
+  }
+  const Reader nc(path_);
+  EXPECT_EQ(nc.dimension("node"), 3u);
+  EXPECT_EQ(nc.dimension("element"), 1u);
+  EXPECT_EQ(nc.dimension("end"), 2u);
+  EXPECT_EQ(nc.dimension("element_node"), 3u);
+  EXPECT_EQ(nc.dimension("point"), 3u);
+  EXPECT_EQ(nc.dimension("step"), 2u);
+  EXPECT_EQ(nc.text(NC_GLOBAL, "Conventions"), "CF-1.8");
+  EXPECT_EQ(nc.text(NC_GLOBAL, "title"), "one three-node cable");
+  EXPECT_EQ(nc.text(NC_GLOBAL, "case_name"), "writer-test");
+  EXPECT_EQ(nc.text(NC_GLOBAL, "source").rfind("flexmoor", 0), 0u);
+  EXPECT_NE(nc.text(NC_GLOBAL, "history").find("writer-test.yaml"), std::string::npos);
+
+  EXPECT_EQ(nc.doubles("node_x"), (std::vector<double>{0.0, 5.0, 10.0}));
+  EXPECT_EQ(nc.doubles("node_z"), (std::vector<double>{0.0, 0.0, 0.0}));
+  EXPECT_EQ(nc.row("element_type", 0), "cable3");
+  EXPECT_EQ(nc.ints("element_node_count"), (std::vector<int>{3}));
+  EXPECT_EQ(nc.ints("element_nodes"), (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(nc.text(nc.variable("element_node_count"), "sample_dimension"), "element_node");
+  EXPECT_EQ(nc.ints("element_point_count"), (std::vector<int>{3}));
+  EXPECT_EQ(nc.ints("point_element"), (std::vector<int>{1, 1, 1}));
+}
+
+TEST_F(NetcdfWriterTest, VariablesCarryUnitsOfTheCaseUnitSystem) {
+  { NetcdfWriter(path_, *case_.model, case_).write(frameOf(0, first_)); }
+  const Reader nc(path_);
+  EXPECT_EQ(nc.units("node_y"), "ft");
+  EXPECT_EQ(nc.units("displacement_x"), "ft");
+  EXPECT_EQ(nc.units("position_z"), "ft");
+  EXPECT_EQ(nc.units("velocity_x"), "ft/s");
+  EXPECT_EQ(nc.units("reaction_z"), "lbf");
+  EXPECT_EQ(nc.units("tension_end"), "lbf");
+  EXPECT_EQ(nc.units("tension_point"), "lbf");
+  EXPECT_EQ(nc.units("time"), "s");
+  EXPECT_EQ(nc.units("load_factor"), "1");
+  EXPECT_FALSE(nc.text(nc.variable("displacement_x"), "long_name").empty());
+}
+
+TEST_F(NetcdfWriterTest, EachRecordIsReadableFromDiskAsSoonAsItIsWritten) {
+  NetcdfWriter writer(path_, *case_.model, case_);
+  EXPECT_EQ(Reader(path_).dimension("step"), 0u);
+  writer.write(frameOf(0, first_));
+  EXPECT_EQ(Reader(path_).dimension("step"), 1u);
+  writer.write(frameOf(1, second_));
+  EXPECT_EQ(writer.records(), 2u);
+
+  const Reader nc(path_);  // the writer is still open: the records were synced
+  EXPECT_EQ(nc.dimension("step"), 2u);
+  EXPECT_EQ(nc.row("step_name", 0), "relax");
+  EXPECT_EQ(nc.row("step_name", 1), "static");
+  EXPECT_EQ(nc.ints("step_number"), (std::vector<int>{1, 2}));
+  EXPECT_EQ(nc.doubles("time"), (std::vector<double>{0.0, 0.5}));
+  EXPECT_EQ(nc.doubles("load_factor"), (std::vector<double>{0.0, 0.25}));
+  // (step, node): u_y = step + node / 10 + 1 / 100; position = reference + displacement.
+  const std::vector<double> uy = nc.doubles("displacement_y");
+  const std::vector<double> x = nc.doubles("position_x");
+  const std::vector<double> vz = nc.doubles("velocity_z");
+  ASSERT_EQ(uy.size(), 6u);
+  for (int step = 0; step < 2; ++step)
+    for (int n = 0; n < 3; ++n) {
+      EXPECT_DOUBLE_EQ(uy[3 * step + n], step + 0.1 * n + 0.01);
+      EXPECT_DOUBLE_EQ(x[3 * step + n], 5.0 * n + step + 0.1 * n);
+      EXPECT_DOUBLE_EQ(vz[3 * step + n], -(step + 0.1 * n + 0.02));
+    }
+  EXPECT_EQ(nc.doubles("reaction_z"), (std::vector<double>{-3.0, 0.0, 0.0, -4.0, 0.0, 0.0}));
+  EXPECT_EQ(nc.doubles("tension_end"), (std::vector<double>{9.5, 12.5, 10.5, 13.5}));
+  EXPECT_EQ(nc.doubles("tension_point"), (std::vector<double>{10.0, 11.0, 12.0, 11.0, 12.0, 13.0}));
+}
+
+TEST_F(NetcdfWriterTest, NaNDisplacementIsRefusedNamingVariableAndIndex) {
+  NetcdfWriter writer(path_, *case_.model, case_);
+  writer.write(frameOf(0, first_));
+  second_.displacement(1, 2) = std::numeric_limits<double>::quiet_NaN();
+  try {
+    writer.write(frameOf(1, second_));
+    FAIL() << "a NaN displacement was written";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("displacement_y[step 1, node 2] is NaN"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find(path_), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(writer.records(), 1u);
+  EXPECT_EQ(Reader(path_).dimension("step"), 1u);  // nothing of the refused record was written
+}
+
+TEST_F(NetcdfWriterTest, InfiniteTensionIsRefused) {
+  NetcdfWriter writer(path_, *case_.model, case_);
+  ResultFrame frame = frameOf(0, first_);
+  frame.elements[0].point_tension[1] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(writer.write(frame), std::runtime_error);
+  EXPECT_EQ(writer.records(), 0u);
+}
+
+TEST_F(NetcdfWriterTest, FrameWithAnotherPointLayoutIsRefused) {
+  NetcdfWriter writer(path_, *case_.model, case_);
+  writer.write(frameOf(0, first_));
+  ResultFrame frame = frameOf(1, second_);
+  frame.elements[0].point_tension.push_back(1.0);
+  EXPECT_THROW(writer.write(frame), std::runtime_error);
+}
+
+TEST_F(NetcdfWriterTest, UnwritablePathThrowsWithNetcdfErrorText) {
+  const std::string bad = (dir_ / "missing-directory" / "x.nc").string();
+  try {
+    NetcdfWriter writer(bad, *case_.model, case_);
+    FAIL() << "created " << bad;
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(bad + ": cannot create the file: ", 0), 0u) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace flexmoor::app
