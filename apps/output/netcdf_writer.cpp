@@ -219,6 +219,45 @@ void NetcdfWriter::gatherTensions(std::vector<Slab>& slabs, const ResultFrame& f
   slabs.push_back(std::move(points));
 }
 
+// Modes of a modes step: circular frequencies and mass-normalised shapes, per record (records of
+// other steps keep the netCDF fill value there).
+void NetcdfWriter::defineModes(size_t count) {
+  mode_count_ = count;
+  file_.redefine();
+  dim_mode_ = file_.defineDimension("mode", count);
+  angular_frequency_ = file_.defineVariable("angular_frequency", NC_DOUBLE, {dim_step_, dim_mode_},
+                                            "natural circular frequency of the mode", "rad/s");
+  mode_shape_ = defineVector3("mode_shape", {dim_step_, dim_mode_, dim_node_},
+                              "component of the mass-normalised mode shape", "");
+  file_.endDefine();
+}
+
+void NetcdfWriter::gatherModes(std::vector<Slab>& slabs, const ResultFrame& frame) {
+  if (frame.frequencies.empty()) return;
+  if (dim_mode_ < 0) defineModes(frame.frequencies.size());
+  if (frame.frequencies.size() != mode_count_)
+    throw std::runtime_error(path() + ": every modes step of a case must ask for the same number "
+                             "of modes (" + std::to_string(mode_count_) + ")");
+  Slab f{angular_frequency_, {records_, 0}, {1, mode_count_}, frame.frequencies};
+  for (size_t m = 0; m < mode_count_; ++m)
+    requireFinite(f.values[m], path(), [&] { return "angular_frequency[mode " + std::to_string(m) + "]"; });
+  slabs.push_back(std::move(f));
+  const size_t nodes = node_count_;
+  for (int k = 0; k < 3; ++k) {
+    Slab s{mode_shape_.id[k], {records_, 0, 0}, {1, mode_count_, nodes},
+           std::vector<double>(mode_count_ * nodes)};
+    for (size_t m = 0; m < mode_count_; ++m)
+      for (size_t n = 0; n < nodes; ++n) {
+        s.values[m * nodes + n] = frame.mode_shapes[m](k, n);
+        requireFinite(s.values[m * nodes + n], path(), [&] {
+          return "mode_shape" + std::string(kAxis[k]) + "[mode " + std::to_string(m) + ", node " +
+                 std::to_string(n) + "]";
+        });
+      }
+    slabs.push_back(std::move(s));
+  }
+}
+
 void NetcdfWriter::write(const ResultFrame& frame) {
   requireMatches(frame);
   const model::State& s = *frame.state;
@@ -236,6 +275,7 @@ void NetcdfWriter::write(const ResultFrame& frame) {
   gatherNodal(slabs, reaction_, frame.reactions);
   if (dim_point_ < 0) definePoints(frame);
   gatherTensions(slabs, frame);
+  gatherModes(slabs, frame);
 
   const int step_number = frame.step_index + 1;
   file_.put(step_number_, {records_}, {1}, &step_number);

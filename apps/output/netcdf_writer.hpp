@@ -56,6 +56,8 @@ class NetcdfWriter {
                                 const std::string& long_name, const std::string& units);
   void writeMesh(const model::Model& model);
   void definePoints(const ResultFrame& first);
+  void defineModes(size_t count);
+  void gatherModes(std::vector<Slab>& slabs, const ResultFrame& frame);
   void requireMatches(const ResultFrame& frame) const;
   void gatherNodal(std::vector<Slab>& slabs, const Vector3Variable& v,
                    const model::NodalField& field) const;
@@ -77,6 +79,9 @@ class NetcdfWriter {
   int step_number_ = -1, step_name_ = -1, time_ = -1, load_factor_ = -1;
   Vector3Variable displacement_, position_, velocity_, reaction_;
   int tension_end_ = -1, tension_point_ = -1, element_point_count_ = -1, point_element_ = -1;
+  int dim_mode_ = -1, angular_frequency_ = -1;  // defined with the first modes step
+  size_t mode_count_ = 0;
+  Vector3Variable mode_shape_;
 };
 
 }  // namespace flexmoor::app

@@ -1,6 +1,6 @@
 #pragma once
 // One solved state as the writers see it: the state, its element results and support reactions,
-// labelled with the step it closes.
+// labelled with the step it closes (or, in a dynamic step, the time it reached).
 #include <string>
 #include <vector>
 
@@ -15,6 +15,9 @@ struct ResultFrame {
   const model::State* state = nullptr;
   std::vector<element::ElementResult> elements;
   model::NodalField reactions;  // 3 x nodes; zero at free dofs
+  // A modes step: natural circular frequencies (rad/s, ascending) and mass-normalised shapes.
+  std::vector<double> frequencies;
+  std::vector<model::NodalField> mode_shapes;
 };
 
 }  // namespace flexmoor::app

@@ -1,6 +1,9 @@
 #include "apps/output/summary_quantities.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
+#include <utility>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -30,6 +33,23 @@ double maxTension(const SummarySpec& spec, const ResultFrame& frame) {
   return t;
 }
 
+// In-plane principal stress resultants of the element, from the mean resultant tensor of its
+// integration points: of the tensor's three eigenvalues, the one along the surface normal is zero
+// and the smallest in magnitude; the other two are returned, larger first.
+std::pair<double, double> principalResultants(const SummarySpec& spec, const ResultFrame& frame) {
+  requireIndex(spec.element, static_cast<int>(frame.elements.size()), spec, "element");
+  const auto& points = frame.elements[spec.element].point_resultant;
+  if (points.empty())
+    throw std::out_of_range("summary \"" + spec.name + "\": element " +
+                            std::to_string(spec.element + 1) + " is not a membrane");
+  Eigen::Matrix3d mean = Eigen::Matrix3d::Zero();
+  for (const Eigen::Matrix3d& n : points) mean += n / static_cast<double>(points.size());
+  Eigen::Vector3d values = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(mean).eigenvalues();
+  std::sort(values.data(), values.data() + 3,
+            [](double a, double b) { return std::abs(a) > std::abs(b); });
+  return {std::max(values(0), values(1)), std::min(values(0), values(1))};
+}
+
 double unscaled(const SummarySpec& spec, const model::Model& model, const ResultFrame& frame) {
   using Q = SummarySpec::Quantity;
   const int n = spec.node, k = spec.component;
@@ -47,6 +67,11 @@ double unscaled(const SummarySpec& spec, const model::Model& model, const Result
       requireIndex(spec.end, 2, spec, "end");
       return frame.elements[spec.element].end_tension[spec.end];
     case Q::MaxTension: return maxTension(spec, frame);
+    case Q::Frequency:
+      requireIndex(spec.mode - 1, static_cast<int>(frame.frequencies.size()), spec, "mode (0-based)");
+      return frame.frequencies[spec.mode - 1];
+    case Q::ResultantMax: return principalResultants(spec, frame).first;
+    case Q::ResultantMin: return principalResultants(spec, frame).second;
   }
   throw std::logic_error("summary \"" + spec.name + "\": unknown quantity");
 }

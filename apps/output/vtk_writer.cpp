@@ -5,6 +5,8 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "apps/output/finite_value.hpp"
 
@@ -13,6 +15,37 @@ namespace {
 
 constexpr int kVtkVertex = 1;
 constexpr int kVtkPolyLine = 4;
+constexpr int kVtkTriangle = 5;
+constexpr int kVtkPolygon = 7;
+constexpr int kVtkQuad = 9;
+constexpr int kVtkQuadraticTriangle = 22;
+constexpr int kVtkQuadraticQuad = 23;
+
+struct VtkCell {
+  int type;
+  std::vector<int> nodes;
+};
+
+// The VTK cell of an element. Membrane node orders are VTK's already for Q4, Q8, T3 and T6
+// (libstruct/shape); the cubic Q12 and T10 are drawn as polygons through their boundary nodes.
+VtkCell vtkCell(const element::Element& e) {
+  const std::vector<int>& n = e.nodes();
+  const std::string type = e.typeName();
+  if (n.size() == 1) return {kVtkVertex, n};
+  if (type.rfind("membrane", 0) != 0) return {kVtkPolyLine, n};
+  switch (n.size()) {
+    case 3: return {kVtkTriangle, n};
+    case 4: return {kVtkQuad, n};
+    case 6: return {kVtkQuadraticTriangle, n};
+    case 8: return {kVtkQuadraticQuad, n};
+    case 10:  // corners 0 1 2, edge nodes 3 4 | 5 6 | 7 8, centroid 9
+      return {kVtkPolygon, {n[0], n[3], n[4], n[1], n[5], n[6], n[2], n[7], n[8]}};
+    case 12:  // corners 0 1 2 3, edge nodes 4 5 | 6 7 | 8 9 | 10 11
+      return {kVtkPolygon,
+              {n[0], n[4], n[5], n[1], n[6], n[7], n[2], n[8], n[9], n[3], n[10], n[11]}};
+  }
+  return {kVtkPolyLine, n};
+}
 
 double meanTension(const element::ElementResult& r) {
   if (r.point_tension.empty()) return 0.0;
@@ -46,17 +79,20 @@ void writeTriples(std::ostream& os, const std::string& path, const char* name,
 }
 
 void writeCells(std::ostream& os, const model::Model& model) {
+  std::vector<VtkCell> cells;
   int size = 0;
-  for (const auto& e : model.elements()) size += 1 + static_cast<int>(e->nodes().size());
-  os << "CELLS " << model.elementCount() << " " << size << "\n";
   for (const auto& e : model.elements()) {
-    os << e->nodes().size();
-    for (const int n : e->nodes()) os << " " << n;
+    cells.push_back(vtkCell(*e));
+    size += 1 + static_cast<int>(cells.back().nodes.size());
+  }
+  os << "CELLS " << cells.size() << " " << size << "\n";
+  for (const VtkCell& c : cells) {
+    os << c.nodes.size();
+    for (const int n : c.nodes) os << " " << n;
     os << "\n";
   }
-  os << "CELL_TYPES " << model.elementCount() << "\n";
-  for (const auto& e : model.elements())
-    os << (e->nodes().size() == 1 ? kVtkVertex : kVtkPolyLine) << "\n";
+  os << "CELL_TYPES " << cells.size() << "\n";
+  for (const VtkCell& c : cells) os << c.type << "\n";
 }
 
 void writeTension(std::ostream& os, const std::string& path, const ResultFrame& frame) {
@@ -88,6 +124,11 @@ void writeVtk(const std::string& path, const model::Model& model, const ResultFr
   writeTriples(text, path, "displacement", frame.state->displacement);
   text << "VECTORS reaction double\n";
   writeTriples(text, path, "reaction", frame.reactions);
+  for (size_t k = 0; k < frame.mode_shapes.size(); ++k) {  // a modes step: one field per mode
+    const std::string name = "mode_" + std::to_string(k + 1);
+    text << "VECTORS " << name << " double\n";
+    writeTriples(text, path, name.c_str(), frame.mode_shapes[k]);
+  }
   writeTension(text, path, frame);
 
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
