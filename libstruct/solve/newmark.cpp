@@ -1,5 +1,6 @@
 #include "libstruct/solve/newmark.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -76,13 +77,16 @@ class NewmarkStepper {
       const VectorXd inertia = assembler_.restrictToFree(inertia_full);
       R.free = (1.0 + alpha_) * (R.free - damping(v)) - inertia;  // Eq. 4.63
       if (alpha_ != 0.0) R.free -= alpha_ * previous_balance;
-      R.scale = std::max(R.scale, inertia_full.norm());
+      // The forces pass through zero twice a period, so the residual is measured against the
+      // largest force seen in the run, not the instantaneous one (round-off would stall Newton).
+      R.scale = std::max({R.scale, inertia_full.norm(), force_scale_});
       rec.residual_norm = R.relative();
       if (it > 0) {
         const Convergence& c = o_.convergence;
         const bool d_ok = !c.use_displacement || rec.displacement_norm < c.displacement_tolerance;
         const bool r_ok = !c.use_residual || rec.residual_norm < c.residual_tolerance;
         if (d_ok && r_ok) {
+          force_scale_ = R.scale;
           s = next;
           steps_since_update_ = refresh_each_step ? 0 : steps_since_update_ + 1;
           return true;
@@ -130,6 +134,7 @@ class NewmarkStepper {
   LinearSolver linear_;
   double factor_h_ = -1.0;
   int steps_since_update_ = 0;
+  double force_scale_ = 0.0;  // largest force norm of the accepted steps
 };
 
 // Advances by h, halving on failure down to max_step_cuts levels.
