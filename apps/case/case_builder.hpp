@@ -70,14 +70,21 @@ void readMaterials(CaseBuilder& b, const YAML::Node& n);
 void readSections(CaseBuilder& b, const YAML::Node& n);
 void readNodes(CaseBuilder& b, const YAML::Node& n);
 void readLines(CaseBuilder& b, const YAML::Node& n);
+void readSurfaces(CaseBuilder& b, const YAML::Node& n);  // read_surfaces.cpp
 void readElements(CaseBuilder& b, const YAML::Node& n);  // then adds the lines' elements
 void readNodeSets(CaseBuilder& b, const YAML::Node& n);
+void readHistories(CaseBuilder& b, const YAML::Node& n);  // read_histories.cpp
 void readSupports(CaseBuilder& b, const YAML::Node& n);
 void readLoads(CaseBuilder& b, const YAML::Node& n);
 void readSteps(CaseBuilder& b, const YAML::Node& n);
 void readSummary(CaseBuilder& b, const YAML::Node& n);
 // Reports free nodes that no element holds (their stiffness would be singular).
 void checkConnectivity(CaseBuilder& b);
+
+// `history: NAME` of a load or a support: the named time function (read_histories.cpp); reports
+// an unknown name, returns nullptr for it and for a broken one.
+std::shared_ptr<const model::TimeFunction> historyRef(CaseBuilder& b, const YAML::Node& n,
+                                                      const std::string& path);
 
 // Node references (node_refs.cpp). One node: an id, LINE.start, LINE.end or LINE.middle.
 std::optional<int> nodeRef(CaseBuilder& b, const YAML::Node& n, const std::string& path);

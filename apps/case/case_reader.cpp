@@ -12,9 +12,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kTopKeys = {"name",  "title", "units",    "materials", "sections",
-                                           "nodes", "lines", "elements", "node_sets", "supports",
-                                           "loads", "steps", "summary"};
+const std::vector<std::string> kTopKeys = {
+    "name",     "title",     "units",    "materials", "sections", "nodes", "lines", "surfaces",
+    "elements", "node_sets", "supports", "histories", "loads",    "steps", "summary"};
 
 YAML::Node loadYaml(Diagnostics& diag) {
   try {
@@ -85,8 +85,10 @@ Case readCase(const std::string& path) {
   readSections(b, section("sections"));
   readNodes(b, section("nodes"));
   readLines(b, section("lines"));
+  readSurfaces(b, section("surfaces"));
   readElements(b, section("elements"));
   readNodeSets(b, section("node_sets"));
+  readHistories(b, section("histories"));
   readSupports(b, section("supports"));
   readLoads(b, section("loads"));
   if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
