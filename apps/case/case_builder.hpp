@@ -1,7 +1,7 @@
 #pragma once
 // The state of one case file being read, shared by the readers of its sections (one file each:
-// read_materials.cpp, read_mesh.cpp, node_refs.cpp, read_conditions.cpp, read_steps.cpp,
-// read_summary.cpp). A name defined with errors is remembered as broken, so that what refers to
+// read_materials.cpp, read_mesh.cpp, read_surfaces.cpp, node_refs.cpp, read_histories.cpp,
+// read_conditions.cpp, read_steps.cpp, read_summary.cpp). A name defined with errors is remembered as broken, so that what refers to
 // it is not reported again.
 #include <map>
 #include <memory>
@@ -13,12 +13,27 @@
 #include "apps/case/case.hpp"
 #include "apps/case/yaml_input.hpp"
 #include "libstruct/element/cable_element.hpp"
+#include "libstruct/element/membrane_element.hpp"
 
 namespace flexmoor::app {
 
 struct SectionSpec {
   element::CableSection section;
   int quadrature = 0;  // Gauss points per element; 0 = as many as the element has nodes
+  // A membrane section (`thickness:` instead of `area:`); quadrature 0 = the element's default.
+  bool is_membrane = false;
+  element::MembraneSection membrane;
+};
+
+// What a section is asked for: cable-like elements (cables, hoop cables) or membranes.
+enum class SectionUse { Cable, Membrane };
+
+// Elements one surface generates (read_surfaces.cpp), each with its element_types entry
+// ("membrane", "axisymmetric_membrane", "cable", "hoop_cable"); added after the lines' cables
+// and registered as the element set of the surface's name.
+struct PendingSurface {
+  std::string name;
+  std::vector<std::pair<std::string, std::unique_ptr<element::Element>>> elements;
 };
 
 // A cable element a line generates; added to the model after the explicit elements.
@@ -43,14 +58,21 @@ struct CaseBuilder {
   std::map<std::string, std::optional<SectionSpec>> sections;  // nullopt: broken
   std::set<std::string> broken_node_names;  // lines and node sets defined with errors
   std::vector<PendingCable> line_cables;
-  // Type of each element in file order ("cable", "spring", "point_mass"; "" when broken).
+  // Membrane law of each material (null: broken, or linear_elastic without nu).
+  std::map<std::string, std::shared_ptr<const material::MembraneMaterial>> membrane_materials;
+  std::vector<PendingSurface> surface_elements;
+  std::map<std::string, std::shared_ptr<const model::TimeFunction>> histories;  // null: broken
+  std::map<std::string, std::vector<int>> surfaces;  // nodes by name; broken: broken_node_names
+  // Type of each element in file order ("cable", "spring", "point_mass", "membrane",
+  // "axisymmetric_membrane", "hoop_cable"; "" when broken).
   std::vector<std::string> element_types;
 
   // Adds a node with the next free id (after the largest so far).
   int addGeneratedNode(const Eigen::Vector3d& position, int line);
   int largestId() const { return node_of_id.empty() ? 0 : node_of_id.rbegin()->first; }
-  // A section by name; reports an unknown one (not a broken one).
-  const SectionSpec* section(const YAML::Node& n, const std::string& path);
+  // A section by name; reports an unknown one (not a broken one) and one of the other use.
+  const SectionSpec* section(const YAML::Node& n, const std::string& path,
+                             SectionUse use = SectionUse::Cable);
 };
 
 // "one of: a, b, c" for the keys of a map, or "a name defined first" when it is empty.

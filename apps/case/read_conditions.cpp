@@ -63,25 +63,76 @@ std::optional<std::vector<double>> readPrescribed(CaseBuilder& b, Fields& f,
   return ok ? std::optional(values) : std::nullopt;
 }
 
+// `history: NAME`: {true, the function} when absent (null) or found; {false, null} when wrong.
+std::pair<bool, std::shared_ptr<const model::TimeFunction>> optionalHistory(CaseBuilder& b,
+                                                                            const Fields& f) {
+  const YAML::Node* h = f.find("history");
+  if (!h) return {true, nullptr};
+  auto history = historyRef(b, *h, f.path("history"));
+  return {history != nullptr, history};
+}
+
+// A prescribed displacement with a history follows displacement * history(t) in dynamic steps.
 void readSupport(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
-  Fields f(b.diag, item, path, {"node", "nodes", "fix", "displacement"});
+  Fields f(b.diag, item, path, {"node", "nodes", "fix", "displacement", "history"});
   const auto nodes = nodeOrNodes(b, f);
   const YAML::Node* fix_node = f.require("fix");
   const auto fix = fix_node ? readFix(b, *fix_node, f.path("fix")) : std::nullopt;
   const auto values = fix ? readPrescribed(b, f, *fix) : std::nullopt;
-  if (!nodes || !values) return;
+  const auto [history_ok, history] = optionalHistory(b, f);
+  if (history && !f.find("displacement"))
+    b.diag.error(*f.find("history"), f.path("history") +
+                                         ": a history without a displacement moves nothing "
+                                         "(expected displacement: with it)");
+  if (!nodes || !values || !history_ok) return;
   for (int node : *nodes)
-    for (size_t i = 0; i < fix->size(); ++i) b.model.constrain(node, (*fix)[i], (*values)[i]);
+    for (size_t i = 0; i < fix->size(); ++i)
+      b.model.constrain(node, (*fix)[i], (*values)[i], history);
 }
 
 void readNodalLoad(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
-  Fields f(b.diag, item, path, {"node", "nodes", "force"});
+  Fields f(b.diag, item, path, {"node", "nodes", "force", "history"});
   const auto nodes = nodeOrNodes(b, f);
   const YAML::Node* force_node = f.require("force");
   const auto force =
       force_node ? b.in.vector3(*force_node, f.path("force"), kind::kForce) : std::nullopt;
-  if (!nodes || !force) return;
-  for (int node : *nodes) b.model.addNodalLoad(node, *force);
+  const auto [history_ok, history] = optionalHistory(b, f);
+  if (!nodes || !force || !history_ok) return;
+  for (int node : *nodes) b.model.addNodalLoad(node, *force, history);
+}
+
+// A follower pressure (Eq. 3.30-3.37) on the membranes of surfaces: `on: SURFACE` or a list of
+// surfaces, acting along the surface normal (s-direction x t-direction of its parameters).
+void readPressure(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
+  Fields f(b.diag, item, path, {"on", "pressure", "history"});
+  const YAML::Node* on = f.require("on");
+  const YAML::Node* p = f.require("pressure");
+  const auto pressure = p ? b.in.quantity(*p, f.path("pressure"), kind::kPressure) : std::nullopt;
+  const auto [history_ok, history] = optionalHistory(b, f);
+  std::vector<int> elements;
+  bool ok = on != nullptr;
+  if (on) {
+    std::vector<YAML::Node> names;
+    if (on->IsSequence())
+      names = listItems(b.diag, *on, f.path("on"));
+    else
+      names.push_back(*on);
+    for (size_t i = 0; i < names.size(); ++i) {
+      const std::string where = on->IsSequence() ? itemPath(f.path("on"), i) : f.path("on");
+      const auto name = b.in.text(names[i], where);
+      const auto set = name ? b.c.element_sets.find(*name) : b.c.element_sets.end();
+      if (name && set == b.c.element_sets.end() && !b.broken_node_names.count(*name))
+        b.diag.error(names[i], where + ": unknown surface (got '" + *name + "', expected " +
+                                   nameList(b.c.element_sets) + ")");
+      ok = ok && set != b.c.element_sets.end();
+      if (set == b.c.element_sets.end()) continue;
+      for (int e : set->second)  // the membranes only, not the surface's cables
+        if (b.element_types[e] == "membrane" || b.element_types[e] == "axisymmetric_membrane")
+          elements.push_back(e);
+    }
+  }
+  if (!ok || !pressure || !history_ok) return;
+  b.model.addPressure({elements, *pressure, history});
 }
 
 // gravity: [gx, gy, gz], or {g: G} for (0, 0, -G).
@@ -105,12 +156,17 @@ void readSupports(CaseBuilder& b, const YAML::Node& n) {
 }
 
 void readLoads(CaseBuilder& b, const YAML::Node& n) {
-  Fields f(b.diag, n, "loads", {"gravity", "nodal"});
+  Fields f(b.diag, n, "loads", {"gravity", "nodal", "pressure"});
   if (const YAML::Node* g = f.find("gravity")) readGravity(b, *g, f.path("gravity"));
   if (const YAML::Node* nodal = f.find("nodal")) {
     const std::vector<YAML::Node> items = listItems(b.diag, *nodal, f.path("nodal"));
     for (size_t i = 0; i < items.size(); ++i)
       readNodalLoad(b, items[i], itemPath(f.path("nodal"), i));
+  }
+  if (const YAML::Node* pressure = f.find("pressure")) {
+    const std::vector<YAML::Node> items = listItems(b.diag, *pressure, f.path("pressure"));
+    for (size_t i = 0; i < items.size(); ++i)
+      readPressure(b, items[i], itemPath(f.path("pressure"), i));
   }
 }
 

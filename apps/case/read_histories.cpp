@@ -1,16 +1,103 @@
-// histories: named time functions (sine, ramp, table) that drive loads and supports.
+// histories: named dimensionless time functions that scale loads, pressures and prescribed
+// displacements in dynamic steps (a load with `history: NAME` is force * NAME(t)):
+//   NAME: {type: sine, amplitude: A, period: T, phase: 0, offset: 0}  offset + A sin(2 pi t / T + phase)
+//   NAME: {type: ramp, start: 0 s, duration: D}                       0 -> 1 over [start, start + D]
+//   NAME: {type: table, times: [t0, t1, ...], values: [f0, f1, ...]}  piecewise linear
+#include <algorithm>
+#include <cmath>
+
 #include "apps/case/case_builder.hpp"
 
 namespace flexmoor::app {
+namespace {
+
+std::vector<double> readNumbers(CaseBuilder& b, const YAML::Node& n, const std::string& path,
+                                const QuantityKind& kind, bool& ok) {
+  std::vector<double> values;
+  const std::vector<YAML::Node> items = listItems(b.diag, n, path);
+  for (size_t i = 0; i < items.size(); ++i) {
+    const auto v = b.in.quantity(items[i], itemPath(path, i), kind);
+    ok = ok && v.has_value();
+    values.push_back(v.value_or(0.0));
+  }
+  ok = ok && n.IsSequence();
+  return values;
+}
+
+std::shared_ptr<const model::TimeFunction> readTable(CaseBuilder& b, Fields& f) {
+  const YAML::Node* t = f.require("times");
+  const YAML::Node* v = f.require("values");
+  if (!t || !v) return nullptr;
+  bool ok = true;
+  const std::vector<double> times = readNumbers(b, *t, f.path("times"), kind::kTime, ok);
+  const std::vector<double> values = readNumbers(b, *v, f.path("values"), kind::kNumber, ok);
+  if (!ok) return nullptr;
+  if (times.size() != values.size() || times.empty()) {
+    b.diag.error(*v, f.path("values") + ": " + std::to_string(values.size()) + " values for " +
+                         std::to_string(times.size()) +
+                         " times (expected one value per time, at least one)");
+    return nullptr;
+  }
+  if (std::adjacent_find(times.begin(), times.end(), std::greater_equal<double>()) !=
+      times.end()) {
+    b.diag.error(*t, f.path("times") + ": not increasing (expected strictly increasing times)");
+    return nullptr;
+  }
+  return std::make_shared<model::TableFunction>(times, values);
+}
+
+std::shared_ptr<const model::TimeFunction> readHistory(CaseBuilder& b, const MapEntry& e) {
+  const std::string path = childPath("histories", e.key);
+  const std::string type = peekText(e.value, "type");
+  Fields f(b.diag, e.value, path,
+           type == "sine"    ? std::vector<std::string>{"type", "amplitude", "period", "phase", "offset"}
+           : type == "ramp"  ? std::vector<std::string>{"type", "start", "duration"}
+           : type == "table" ? std::vector<std::string>{"type", "times", "values"}
+                             : std::vector<std::string>{"type"});
+  const YAML::Node* t = f.require("type");
+  if (!t) return nullptr;
+  if (type == "sine") {
+    const YAML::Node* a = f.require("amplitude");
+    const YAML::Node* p = f.require("period");
+    const auto amplitude = a ? b.in.quantity(*a, f.path("amplitude"), kind::kNumber) : std::nullopt;
+    const auto period =
+        p ? b.in.quantity(*p, f.path("period"), kind::kTime, Limit::Positive) : std::nullopt;
+    const double phase = b.in.quantityOr(f, "phase", kind::kNumber, Limit::Any, 0.0);
+    const double offset = b.in.quantityOr(f, "offset", kind::kNumber, Limit::Any, 0.0);
+    if (!amplitude || !period) return nullptr;
+    return std::make_shared<model::SineFunction>(offset, *amplitude, *period, phase);
+  }
+  if (type == "ramp") {
+    const double start = b.in.quantityOr(f, "start", kind::kTime, Limit::NonNegative, 0.0);
+    const YAML::Node* d = f.require("duration");
+    const auto duration =
+        d ? b.in.quantity(*d, f.path("duration"), kind::kTime, Limit::Positive) : std::nullopt;
+    if (!duration) return nullptr;
+    return std::make_shared<model::RampFunction>(start, *duration);
+  }
+  if (type == "table") return readTable(b, f);
+  b.in.choice<int>(*t, f.path("type"), {{"sine", 0}, {"ramp", 1}, {"table", 2}});
+  return nullptr;
+}
+
+}  // namespace
 
 void readHistories(CaseBuilder& b, const YAML::Node& n) {
-  if (n && n.size() > 0) b.diag.error(n, "histories: not read yet (expected no histories)");
+  for (const MapEntry& e : mapEntries(b.diag, n, "histories"))
+    b.histories[e.key] = readHistory(b, e);
 }
 
 std::shared_ptr<const model::TimeFunction> historyRef(CaseBuilder& b, const YAML::Node& n,
                                                       const std::string& path) {
-  b.diag.error(n, path + ": histories are not read yet");
-  return nullptr;
+  const std::optional<std::string> name = b.in.text(n, path);
+  if (!name) return nullptr;
+  const auto found = b.histories.find(*name);
+  if (found == b.histories.end()) {
+    b.diag.error(n, path + ": unknown history (got '" + *name + "', expected " +
+                        nameList(b.histories) + ")");
+    return nullptr;
+  }
+  return found->second;
 }
 
 }  // namespace flexmoor::app

@@ -6,67 +6,113 @@ namespace {
 
 using material::Compression;
 
-std::shared_ptr<const material::CableMaterial> readMaterial(CaseBuilder& b, const MapEntry& e) {
+// Both laws of a material: the cable law (Eq. 2.53 / 2.54) and, where it has one, the membrane
+// law (Eq. 2.41 / 2.42). A linear elastic material is a membrane material when it gives nu.
+struct MaterialLaws {
+  std::shared_ptr<const material::CableMaterial> cable;
+  std::shared_ptr<const material::MembraneMaterial> membrane;
+};
+
+MaterialLaws readMaterial(CaseBuilder& b, const MapEntry& e) {
   const std::string path = childPath("materials", e.key);
   const std::string type = peekText(e.value, "type");
   Fields f(b.diag, e.value, path,
-           type == "linear_elastic" ? std::vector<std::string>{"type", "E", "compression"}
+           type == "linear_elastic" ? std::vector<std::string>{"type", "E", "nu", "compression"}
            : type == "mooney_rivlin"
                ? std::vector<std::string>{"type", "C1", "C2", "compression"}
-               : std::vector<std::string>{"type", "E", "C1", "C2", "compression"});
+               : std::vector<std::string>{"type", "E", "nu", "C1", "C2", "compression"});
   const YAML::Node* t = f.require("type");
-  if (!t) return nullptr;
+  if (!t) return {};
   if (type != "linear_elastic" && type != "mooney_rivlin") {
     b.in.choice<int>(*t, f.path("type"), {{"linear_elastic", 0}, {"mooney_rivlin", 1}});
-    return nullptr;
+    return {};
   }
   Compression compression = Compression::TensionOnly;
   if (const YAML::Node* c = f.find("compression")) {
     const auto chosen = b.in.choice(*c, f.path("compression"), compressionChoices());
-    if (!chosen) return nullptr;
+    if (!chosen) return {};
     compression = *chosen;
   }
-  if (type == "linear_elastic") {  // Eq. 2.53
+  if (type == "linear_elastic") {  // Eq. 2.53; in plane stress Eq. 2.41
     const YAML::Node* E = f.require("E");
     const auto modulus =
         E ? b.in.quantity(*E, f.path("E"), kind::kPressure, Limit::Positive) : std::nullopt;
-    if (!modulus) return nullptr;
-    return std::make_shared<material::LinearElasticCable>(*modulus, compression);
+    std::optional<double> nu;
+    if (const YAML::Node* n = f.find("nu")) {
+      nu = b.in.quantity(*n, f.path("nu"), kind::kNumber);
+      if (nu && !(*nu > -1.0 && *nu < 0.5 + 1e-12)) {
+        b.diag.error(*n, f.path("nu") + ": out of range (got " + n->Scalar() +
+                             ", expected a Poisson ratio above -1 and at most 0.5)");
+        nu.reset();
+      }
+      if (!nu) return {};
+    }
+    if (!modulus) return {};
+    MaterialLaws laws{std::make_shared<material::LinearElasticCable>(*modulus, compression), nullptr};
+    if (nu) laws.membrane = std::make_shared<material::LinearElasticPlaneStress>(*modulus, *nu);
+    return laws;
   }
   // Eq. 2.54: the initial modulus is 6 (C1 + C2), which must be positive.
   const YAML::Node* n1 = f.require("C1");
   const YAML::Node* n2 = f.require("C2");
   const auto C1 = n1 ? b.in.quantity(*n1, f.path("C1"), kind::kPressure) : std::nullopt;
   const auto C2 = n2 ? b.in.quantity(*n2, f.path("C2"), kind::kPressure) : std::nullopt;
-  if (!C1 || !C2) return nullptr;
+  if (!C1 || !C2) return {};
   if (!(*C1 + *C2 > 0.0)) {
     b.diag.error(*n1, path + ": out of range (got C1 = " + n1->Scalar() + ", C2 = " + n2->Scalar() +
                           ", expected C1 + C2 > 0: the initial modulus is 6 (C1 + C2))");
-    return nullptr;
+    return {};
   }
-  return std::make_shared<material::MooneyRivlinCable>(*C1, *C2, compression);
+  return {std::make_shared<material::MooneyRivlinCable>(*C1, *C2, compression),
+          std::make_shared<material::MooneyRivlinMembrane>(*C1, *C2)};  // Eq. 2.42
 }
 
+// A cable section (`area:`) or a membrane section (`thickness:`, its material needing a membrane
+// law).
 std::optional<SectionSpec> readSection(CaseBuilder& b, const MapEntry& e) {
   Fields f(b.diag, e.value, childPath("sections", e.key),
-           {"material", "area", "density", "quadrature"});
+           {"material", "area", "thickness", "density", "quadrature"});
   SectionSpec s;
+  const YAML::Node* area = f.find("area");
+  const YAML::Node* thickness = f.find("thickness");
+  if (area && thickness) {
+    b.diag.error(*thickness, f.path() + ": give either area (a cable section) or thickness (a "
+                                        "membrane section), not both");
+    return std::nullopt;
+  }
+  s.is_membrane = thickness != nullptr;
   const YAML::Node* m = f.require("material");
   const auto name = m ? b.in.text(*m, f.path("material")) : std::nullopt;
   const auto found = name ? b.materials.find(*name) : b.materials.end();
   if (name && found == b.materials.end())
     b.diag.error(*m, f.path("material") + ": unknown material (got '" + *name + "', expected " +
                          nameList(b.materials) + ")");
-  const bool material_ok = found != b.materials.end() && found->second;
+  bool material_ok = found != b.materials.end() && found->second;
+  if (material_ok && s.is_membrane) {
+    s.membrane.material = b.membrane_materials[*name];
+    if (!s.membrane.material) {
+      b.diag.error(*m, f.path("material") + ": not a membrane material (got '" + *name +
+                           "', linear_elastic without nu; expected mooney_rivlin or "
+                           "linear_elastic with nu)");
+      material_ok = false;
+    }
+  }
   if (material_ok) s.section.material = found->second;
-  const YAML::Node* area = f.require("area");
-  const auto a =
-      area ? b.in.quantity(*area, f.path("area"), kind::kArea, Limit::Positive) : std::nullopt;
-  s.section.area = a.value_or(0.0);
-  s.section.density = b.in.quantityOr(f, "density", kind::kDensity, Limit::NonNegative, 0.0);
+  std::optional<double> size;
+  if (s.is_membrane)
+    size = b.in.quantity(*thickness, f.path("thickness"), kind::kLength, Limit::Positive);
+  else if (!area && f.isMap())
+    b.diag.error(f.node(), f.path() + ": missing key 'area' (or 'thickness' for a membrane)");
+  else if (area)
+    size = b.in.quantity(*area, f.path("area"), kind::kArea, Limit::Positive);
+  const double density = b.in.quantityOr(f, "density", kind::kDensity, Limit::NonNegative, 0.0);
+  s.section.area = s.is_membrane ? 0.0 : size.value_or(0.0);
+  s.section.density = density;
+  s.membrane.thickness = s.is_membrane ? size.value_or(0.0) : 0.0;
+  s.membrane.density = density;
   if (const YAML::Node* q = f.find("quadrature"))
     s.quadrature = b.in.integer(*q, f.path("quadrature"), 0, 32).value_or(-1);
-  if (!material_ok || !a || s.quadrature < 0) return std::nullopt;
+  if (!material_ok || !size || s.quadrature < 0) return std::nullopt;
   return s;
 }
 
@@ -79,15 +125,19 @@ const std::vector<std::pair<std::string, Compression>>& compressionChoices() {
 }
 
 void readMaterials(CaseBuilder& b, const YAML::Node& n) {
-  for (const MapEntry& e : mapEntries(b.diag, n, "materials"))
-    b.materials[e.key] = readMaterial(b, e);
+  for (const MapEntry& e : mapEntries(b.diag, n, "materials")) {
+    const MaterialLaws laws = readMaterial(b, e);
+    b.materials[e.key] = laws.cable;
+    b.membrane_materials[e.key] = laws.membrane;
+  }
 }
 
 void readSections(CaseBuilder& b, const YAML::Node& n) {
   for (const MapEntry& e : mapEntries(b.diag, n, "sections")) b.sections[e.key] = readSection(b, e);
 }
 
-const SectionSpec* CaseBuilder::section(const YAML::Node& n, const std::string& path) {
+const SectionSpec* CaseBuilder::section(const YAML::Node& n, const std::string& path,
+                                        SectionUse use) {
   const std::optional<std::string> name = in.text(n, path);
   if (!name) return nullptr;
   const auto found = sections.find(*name);
@@ -96,7 +146,17 @@ const SectionSpec* CaseBuilder::section(const YAML::Node& n, const std::string& 
         n, path + ": unknown section (got '" + *name + "', expected " + nameList(sections) + ")");
     return nullptr;
   }
-  return found->second ? &*found->second : nullptr;
+  if (!found->second) return nullptr;
+  const bool membrane = use == SectionUse::Membrane;
+  if (found->second->is_membrane != membrane) {
+    diag.error(n, path + ": wrong kind of section (got '" + *name + "', a " +
+                      (membrane ? "cable section with area" : "membrane section with thickness") +
+                      ", expected a " +
+                      (membrane ? "membrane section with thickness" : "cable section with area") +
+                      ")");
+    return nullptr;
+  }
+  return &*found->second;
 }
 
 }  // namespace flexmoor::app

@@ -1,9 +1,10 @@
 // nodes:, lines: and elements: of a case file. Model nodes are the explicit nodes in ascending id,
-// then the nodes each line generates; model elements are the explicit elements in file order,
-// then the cable elements of each line in order.
+// then the nodes each line generates, then those of each surface; model elements are the explicit
+// elements in file order, then the cable elements of each line, then each surface's elements.
 #include <algorithm>
 
 #include "apps/case/case_builder.hpp"
+#include "libstruct/element/axisymmetric_membrane.hpp"
 #include "libstruct/element/spring_element.hpp"
 
 namespace flexmoor::app {
@@ -130,6 +131,51 @@ std::unique_ptr<element::Element> readCable(CaseBuilder& b, Fields& f) {
   return element::makeCableElement(*nodes, section->section, section->quadrature);
 }
 
+// A membrane of 3, 6 or 10 nodes (triangle) or 4, 8 or 12 (quadrilateral), in the node order of
+// shape/quad_shape.hpp and shape/triangle_shape.hpp (Gmsh and VTK order).
+std::unique_ptr<element::Element> readMembrane(CaseBuilder& b, Fields& f) {
+  const auto nodes = elementNodes(b, f, 3, 12);
+  const YAML::Node* s = f.require("section");
+  const SectionSpec* section = s ? b.section(*s, f.path("section"), SectionUse::Membrane) : nullptr;
+  if (!nodes) return nullptr;
+  const int count = static_cast<int>(nodes->size());
+  const bool triangle = count == 3 || count == 6 || count == 10;
+  if (!triangle && count != 4 && count != 8 && count != 12) {
+    b.diag.error(*f.find("nodes"), f.path("nodes") + ": no membrane has " + std::to_string(count) +
+                                       " nodes (expected 3, 6, 10 for a triangle or 4, 8, 12 for "
+                                       "a quadrilateral)");
+    return nullptr;
+  }
+  if (!section) return nullptr;
+  return element::makeMembraneElement(triangle ? "triangle" : "quad", *nodes, section->membrane,
+                                      section->quadrature);
+}
+
+// A meridian element of 2 to 4 nodes in the x-z plane; its nodes' y dofs are fixed.
+std::unique_ptr<element::Element> readAxisymmetricMembrane(CaseBuilder& b, Fields& f) {
+  const auto nodes = elementNodes(b, f, 2, 4);
+  const YAML::Node* s = f.require("section");
+  const SectionSpec* section = s ? b.section(*s, f.path("section"), SectionUse::Membrane) : nullptr;
+  if (!nodes || !section) return nullptr;
+  for (int node : *nodes) b.model.constrain(node, 1);
+  return element::makeAxisymmetricMembrane(*nodes, section->membrane, section->quadrature);
+}
+
+// A hoop ring of a cable section at one node of an axisymmetric model (radius = its x).
+std::unique_ptr<element::Element> readHoopCable(CaseBuilder& b, Fields& f) {
+  const YAML::Node* n = f.require("node");
+  const YAML::Node* s = f.require("section");
+  const auto node = n ? nodeRef(b, *n, f.path("node")) : std::nullopt;
+  const SectionSpec* section = s ? b.section(*s, f.path("section")) : nullptr;
+  if (!node || !section) return nullptr;
+  if (!(b.model.reference()(0, *node) > 0.0)) {
+    b.diag.error(*n, f.path("node") + ": a hoop needs a radius (got a node at x = " +
+                         std::to_string(b.model.reference()(0, *node)) + ", expected x > 0)");
+    return nullptr;
+  }
+  return std::make_unique<element::HoopCable>(*node, section->section);
+}
+
 std::unique_ptr<element::Element> readSpring(CaseBuilder& b, Fields& f) {
   const auto nodes = elementNodes(b, f, 2, 2);
   const YAML::Node* k = f.require("stiffness");
@@ -163,22 +209,33 @@ void readElement(CaseBuilder& b, const YAML::Node& item, const std::string& path
   const std::vector<std::string> spring = {"type", "nodes", "stiffness", "rest_length",
                                            "compression"};
   const std::vector<std::string> point_mass = {"type", "node", "mass"};
+  const std::vector<std::string> hoop = {"type", "node", "section"};
   const std::vector<std::string> any = {"type",        "nodes",       "section", "stiffness",
                                         "rest_length", "compression", "node",    "mass"};
+  const bool on_nodes = type == "cable" || type == "membrane" || type == "axisymmetric_membrane";
   Fields f(b.diag, item, path,
-           type == "cable"        ? cable
+           on_nodes               ? cable
            : type == "spring"     ? spring
            : type == "point_mass" ? point_mass
+           : type == "hoop_cable" ? hoop
                                   : any);  // the type itself is reported below
   std::unique_ptr<element::Element> element;
   if (type == "cable")
     element = readCable(b, f);
+  else if (type == "membrane")
+    element = readMembrane(b, f);
+  else if (type == "axisymmetric_membrane")
+    element = readAxisymmetricMembrane(b, f);
+  else if (type == "hoop_cable")
+    element = readHoopCable(b, f);
   else if (type == "spring")
     element = readSpring(b, f);
   else if (type == "point_mass")
     element = readPointMass(b, f);
   else if (const YAML::Node* t = f.require("type"))
-    b.in.choice<int>(*t, f.path("type"), {{"cable", 0}, {"spring", 1}, {"point_mass", 2}});
+    b.in.choice<int>(*t, f.path("type"),
+                     {{"cable", 0}, {"membrane", 1}, {"axisymmetric_membrane", 2},
+                      {"hoop_cable", 3}, {"spring", 4}, {"point_mass", 5}});
   b.element_types.push_back(element ? type : "");
   if (element) b.model.addElement(std::move(element));
 }
@@ -233,6 +290,13 @@ void readElements(CaseBuilder& b, const YAML::Node& n) {
     b.model.addElement(element::makeCableElement(std::move(p.nodes), s.section, s.quadrature));
     b.element_types.push_back("cable");
   }
+  for (PendingSurface& surface : b.surface_elements) {
+    std::vector<int>& set = b.c.element_sets[surface.name];
+    for (auto& [type, element] : surface.elements) {
+      set.push_back(b.model.addElement(std::move(element)));
+      b.element_types.push_back(type);
+    }
+  }
 }
 
 void checkConnectivity(CaseBuilder& b) {
@@ -248,7 +312,7 @@ void checkConnectivity(CaseBuilder& b) {
         free += (free.empty() ? "" : ", ") + std::string(axis[k]);
     if (held[node] || free.empty()) continue;
     b.diag.error(b.node_line[node], "node " + std::to_string(b.c.node_ids[node]) +
-                                        ": no cable or spring holds it and its " + free +
+                                        ": no element holds it and its " + free +
                                         " are not fixed (expected it connected or fixed: its "
                                         "stiffness would be singular)");
   }

@@ -1,4 +1,5 @@
 // summary: of a case file: the named scalars a run reports in summary.json.
+#include <algorithm>
 #include <charconv>
 
 #include "apps/case/case_builder.hpp"
@@ -8,30 +9,48 @@ namespace {
 
 using Quantity = SummarySpec::Quantity;
 
-// What a quantity is measured on.
-enum class Target { Node, Element, Model };
+// What a quantity is measured on: a node, one end of a cable or spring, a membrane element, a mode
+// of a modes step, or the whole model.
+enum class Target { Node, ElementEnd, Membrane, Mode, Model };
+
+// The unit a quantity is reported in.
+enum class Measure { Length, Force, ForcePerLength, AngularFrequency };
 
 struct QuantityInfo {
   Quantity quantity;
   int component;
-  bool is_length;  // else a force
+  Measure measure;
   Target target;
 };
 
+std::string unitOf(Measure m, UnitSystem system) {
+  const UnitNames units = unitNames(system);
+  switch (m) {
+    case Measure::Length: return units.length;
+    case Measure::Force: return units.force;
+    case Measure::ForcePerLength: return units.force + "/" + units.length;
+    case Measure::AngularFrequency: return "rad/s";
+  }
+  return "";
+}
+
 const std::vector<std::pair<std::string, QuantityInfo>>& quantities() {
   static const std::vector<std::pair<std::string, QuantityInfo>> table = {
-      {"displacement_x", {Quantity::Displacement, 0, true, Target::Node}},
-      {"displacement_y", {Quantity::Displacement, 1, true, Target::Node}},
-      {"displacement_z", {Quantity::Displacement, 2, true, Target::Node}},
-      {"position_x", {Quantity::Position, 0, true, Target::Node}},
-      {"position_y", {Quantity::Position, 1, true, Target::Node}},
-      {"position_z", {Quantity::Position, 2, true, Target::Node}},
-      {"reaction_x", {Quantity::Reaction, 0, false, Target::Node}},
-      {"reaction_y", {Quantity::Reaction, 1, false, Target::Node}},
-      {"reaction_z", {Quantity::Reaction, 2, false, Target::Node}},
-      {"reaction_magnitude", {Quantity::ReactionMagnitude, 0, false, Target::Node}},
-      {"end_tension", {Quantity::EndTension, 0, false, Target::Element}},
-      {"max_tension", {Quantity::MaxTension, 0, false, Target::Model}},
+      {"displacement_x", {Quantity::Displacement, 0, Measure::Length, Target::Node}},
+      {"displacement_y", {Quantity::Displacement, 1, Measure::Length, Target::Node}},
+      {"displacement_z", {Quantity::Displacement, 2, Measure::Length, Target::Node}},
+      {"position_x", {Quantity::Position, 0, Measure::Length, Target::Node}},
+      {"position_y", {Quantity::Position, 1, Measure::Length, Target::Node}},
+      {"position_z", {Quantity::Position, 2, Measure::Length, Target::Node}},
+      {"reaction_x", {Quantity::Reaction, 0, Measure::Force, Target::Node}},
+      {"reaction_y", {Quantity::Reaction, 1, Measure::Force, Target::Node}},
+      {"reaction_z", {Quantity::Reaction, 2, Measure::Force, Target::Node}},
+      {"reaction_magnitude", {Quantity::ReactionMagnitude, 0, Measure::Force, Target::Node}},
+      {"end_tension", {Quantity::EndTension, 0, Measure::Force, Target::ElementEnd}},
+      {"max_tension", {Quantity::MaxTension, 0, Measure::Force, Target::Model}},
+      {"resultant_max", {Quantity::ResultantMax, 0, Measure::ForcePerLength, Target::Membrane}},
+      {"resultant_min", {Quantity::ResultantMin, 0, Measure::ForcePerLength, Target::Membrane}},
+      {"frequency", {Quantity::Frequency, 0, Measure::AngularFrequency, Target::Mode}},
   };
   return table;
 }
@@ -59,16 +78,41 @@ std::optional<int> stepRef(CaseBuilder& b, const YAML::Node& n, const std::strin
   return std::nullopt;
 }
 
-// `element: ID` (1-based, explicit elements first, then line elements) of a cable or spring.
-std::optional<int> tensionElement(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
-  const int count = static_cast<int>(b.element_types.size());
-  const auto id = b.in.integer(n, path, 1, std::max(count, 1));
-  if (!id) return std::nullopt;
-  const std::string& type = b.element_types[*id - 1];
-  if (type == "point_mass")
-    b.diag.error(n, path + ": element " + n.Scalar() +
-                        " carries no tension (got a point_mass, expected a cable or spring)");
-  if (type == "cable" || type == "spring") return *id - 1;
+// `element: ID` (1-based over the file's elements, then the lines' and the surfaces' elements) or
+// `element: SURFACE.K` (the K-th element of a surface), of one of the `types`.
+std::optional<int> elementRef(CaseBuilder& b, const YAML::Node& n, const std::string& path,
+                              const std::vector<std::string>& types, const std::string& wanted) {
+  std::optional<int> index;
+  const std::string s = n.IsScalar() ? n.Scalar() : "";
+  const size_t dot = s.find('.');
+  if (dot != std::string::npos) {
+    const auto set = b.c.element_sets.find(s.substr(0, dot));
+    if (set == b.c.element_sets.end()) {
+      if (!b.broken_node_names.count(s.substr(0, dot)))
+        b.diag.error(n, path + ": unknown surface (got '" + s + "', expected SURFACE.K with " +
+                            "SURFACE " + nameList(b.c.element_sets) + ")");
+      return std::nullopt;
+    }
+    const int count = static_cast<int>(set->second.size());
+    int local = 0;
+    const std::string tail = s.substr(dot + 1);
+    const auto [end, error] = std::from_chars(tail.data(), tail.data() + tail.size(), local);
+    if (error != std::errc() || end != tail.data() + tail.size() || local < 1 || local > count) {
+      b.diag.error(n, path + ": no such element of '" + set->first + "' (got '" + tail +
+                          "', expected 1 to " + std::to_string(count) + ")");
+      return std::nullopt;
+    }
+    index = set->second[local - 1];
+  } else {
+    const int count = static_cast<int>(b.element_types.size());
+    const auto id = b.in.integer(n, path, 1, std::max(count, 1));
+    if (!id) return std::nullopt;
+    index = *id - 1;
+  }
+  const std::string& type = b.element_types[*index];
+  if (type.empty()) return std::nullopt;  // broken, reported where it is defined
+  if (std::find(types.begin(), types.end(), type) != types.end()) return index;
+  b.diag.error(n, path + ": element " + s + " is a " + type + " (expected " + wanted + ")");
   return std::nullopt;
 }
 
@@ -95,9 +139,11 @@ bool checkReaction(CaseBuilder& b, const YAML::Node& n, const std::string& path,
 // Every key a quantity does not use is an error, so that a misplaced key is not ignored.
 bool rejectUnused(CaseBuilder& b, Fields& f, const std::string& quantity, Target target) {
   bool ok = true;
-  for (const char* key : {"node", "element", "end"}) {
-    const bool used =
-        std::string(key) == "node" ? target == Target::Node : target == Target::Element;
+  for (const std::string key : {"node", "element", "end", "mode"}) {
+    const bool used = key == "node"      ? target == Target::Node
+                      : key == "element" ? target == Target::ElementEnd || target == Target::Membrane
+                      : key == "end"     ? target == Target::ElementEnd
+                                         : target == Target::Mode;
     if (f.find(key) && !used) {
       b.diag.error(*f.find(key), f.path(key) + ": not used by " + quantity);
       ok = false;
@@ -108,7 +154,7 @@ bool rejectUnused(CaseBuilder& b, Fields& f, const std::string& quantity, Target
 
 std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   Fields f(b.diag, e.value, childPath("summary", e.key),
-           {"quantity", "node", "element", "end", "scale", "step"});
+           {"quantity", "node", "element", "end", "mode", "scale", "step"});
   SummarySpec s;
   s.name = e.key;
   s.where = {b.diag.file(), lineOf(e.key_node)};
@@ -122,8 +168,7 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   if (!rejectUnused(b, f, q->Scalar(), info.target)) return std::nullopt;
   s.quantity = info.quantity;
   s.component = info.component;
-  const UnitNames units = unitNames(b.in.units);
-  s.unit = info.is_length ? units.length : units.force;
+  s.unit = unitOf(info.measure, b.in.units);
   if (info.target == Target::Node) {
     const YAML::Node* n = f.require("node");
     const auto node = n ? nodeRef(b, *n, f.path("node")) : std::nullopt;
@@ -131,10 +176,39 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
     s.node = *node;
     if (!checkReaction(b, *n, f.path("node"), s)) return std::nullopt;
   }
-  if (info.target == Target::Element) {
+  if (info.target == Target::Membrane) {
+    const YAML::Node* el = f.require("element");
+    const auto element = el ? elementRef(b, *el, f.path("element"),
+                                         {"membrane", "axisymmetric_membrane"}, "a membrane")
+                            : std::nullopt;
+    if (!element) return std::nullopt;
+    s.element = *element;
+  }
+  if (info.target == Target::Mode) {
+    const YAML::Node* m = f.require("mode");
+    const auto mode = m ? b.in.integer(*m, f.path("mode"), 1) : std::nullopt;
+    if (!mode || !step) return std::nullopt;
+    const int index = *step < 0 ? static_cast<int>(b.c.steps.size()) - 1 : *step;
+    if (index < 0 || b.c.steps[index].kind != StepSpec::Kind::Modes) {
+      b.diag.error(*q, f.path("quantity") + ": frequency of a step that is not a modes step (got " +
+                           (index < 0 ? std::string("no steps") : "step '" + b.c.steps[index].name + "'") +
+                           ", expected step: naming a modes step)");
+      return std::nullopt;
+    }
+    if (*mode > b.c.steps[index].modes.modes) {
+      b.diag.error(*m, f.path("mode") + ": beyond the modes computed (got " + m->Scalar() +
+                           ", expected 1 to " + std::to_string(b.c.steps[index].modes.modes) +
+                           ", the count of step '" + b.c.steps[index].name + "')");
+      return std::nullopt;
+    }
+    s.mode = *mode;
+  }
+  if (info.target == Target::ElementEnd) {
     const YAML::Node* el = f.require("element");
     const YAML::Node* end = f.require("end");
-    const auto element = el ? tensionElement(b, *el, f.path("element")) : std::nullopt;
+    const auto element = el ? elementRef(b, *el, f.path("element"), {"cable", "spring"},
+                                         "a cable or spring")
+                            : std::nullopt;
     const auto which =
         end ? b.in.choice<int>(*end, f.path("end"), {{"first", 0}, {"last", 1}}) : std::nullopt;
     if (!element || !which) return std::nullopt;

@@ -105,8 +105,8 @@ std::vector<YAML::Node> listItems(Diagnostics& diag, const YAML::Node& list,
 
 std::string peekText(const YAML::Node& map, const char* key) {
   if (!map.IsMap()) return "";
-  const YAML::Node value = map[key];
-  return value.IsScalar() ? value.Scalar() : "";
+  const YAML::Node value = map[key];  // invalid (not merely null) when the key is absent
+  return value.IsDefined() && value.IsScalar() ? value.Scalar() : "";
 }
 
 Fields::Fields(Diagnostics& diag, const YAML::Node& map, std::string path,

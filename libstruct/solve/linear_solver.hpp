@@ -27,6 +27,12 @@ class LinearSolver {
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   // True when the last factorisation needed LU (the matrix was not positive definite).
   bool usedLu() const { return use_lu_; }
+  // Entries of the Cholesky factor L after the symbolic analysis (its memory is 12 bytes each:
+  // value and row index); 0 before the first factorisation.
+  double factorNonzeros() const {
+    // Eigen offers the CHOLMOD common block through a non-const accessor only.
+    return analysed_llt_ ? const_cast<decltype(llt_)&>(llt_).cholmod().lnz : 0.0;
+  }
 
  private:
   bool factorizeLu(const model::SparseMatrix& A);

@@ -1,5 +1,7 @@
-// Time per Newton iteration (element sweep + factorisation + solve) against problem size.
-// Run: build/bin/flexmoor_bench [--benchmark_filter=...]; docs/performance.md records figures.
+// Time per Newton iteration (element sweep + factorisation + solve) and per Newmark time step
+// against problem size, with the memory of the tangent and its factor per dof.
+// Run: scripts/bench.sh (builds build-bench/, prints the growth exponents); docs/performance.md
+// records the figures.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -9,6 +11,7 @@
 #include "libstruct/model/assembler.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
+#include "libstruct/solve/newmark.hpp"
 
 namespace {
 
@@ -88,7 +91,11 @@ void newtonIteration(benchmark::State& bench, Structure& structure) {
     linear.factorize(K);
     benchmark::DoNotOptimize(linear.solve(R.free));
   }
-  bench.counters["dofs"] = assembler.equationCount();
+  const double dofs = assembler.equationCount();
+  bench.counters["dofs"] = dofs;
+  // Memory: stored entries of K and of its Cholesky factor, per dof (constant = linear memory).
+  bench.counters["K_nnz_per_dof"] = K.nonZeros() / dofs;
+  bench.counters["L_nnz_per_dof"] = linear.factorNonzeros() / dofs;
   bench.SetComplexityN(assembler.equationCount());
 }
 
@@ -128,6 +135,38 @@ BENCHMARK(ElementSweepCableChain)
     ->Range(100, 100000)
     ->Complexity(benchmark::oN)
     ->Unit(benchmark::kMicrosecond);
+
+// Newmark time steps (trapezoidal rule, full Newton, residual 1e-8) released from the stressed
+// state: each benchmark iteration integrates kSteps steps from the same start, so the time per
+// step includes the iterations a real step needs (the steps/s counter; its inverse is per step).
+template <class Structure>
+void newmarkSteps(benchmark::State& bench, Structure& structure, double dt) {
+  constexpr int kSteps = 5;
+  model::Assembler assembler(structure.model);
+  solve::DynamicOptions o;
+  o.schedule = {{dt, kSteps}};
+  o.convergence.use_displacement = false;
+  int iterations = 0;
+  for (auto _ : bench) {
+    model::State s = structure.state;
+    iterations = solve::integrate(assembler, s, o).iterations;
+  }
+  bench.counters["dofs"] = assembler.equationCount();
+  bench.counters["iterations_per_step"] = static_cast<double>(iterations) / kSteps;
+  bench.counters["steps"] = benchmark::Counter(kSteps, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void TimeStepCableChain(benchmark::State& bench) {
+  CableChain chain(static_cast<int>(bench.range(0)) / 3, 2);
+  newmarkSteps(bench, chain, 1e-3);
+}
+BENCHMARK(TimeStepCableChain)->RangeMultiplier(10)->Range(100, 100000)->Unit(benchmark::kMillisecond);
+
+void TimeStepMembraneSheet(benchmark::State& bench) {
+  MembraneSheet sheet(static_cast<int>(std::sqrt(bench.range(0) / 3.0)));
+  newmarkSteps(bench, sheet, 1e-3);
+}
+BENCHMARK(TimeStepMembraneSheet)->RangeMultiplier(10)->Range(100, 100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

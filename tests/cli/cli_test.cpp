@@ -59,6 +59,7 @@ struct Table1Row {
   const char* case_name;
   double sag, movement;
 };
+void PrintTo(const Table1Row& r, std::ostream* os) { *os << r.case_name; }
 
 class Example1 : public ::testing::TestWithParam<Table1Row> {};
 

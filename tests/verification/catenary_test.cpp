@@ -129,6 +129,9 @@ struct RefinedMesh {
   int elements;
   int nodes_per_element;
 };
+void PrintTo(const RefinedMesh& m, std::ostream* os) {
+  *os << m.elements << "xL" << m.nodes_per_element;
+}
 
 class CatenaryRefined : public ::testing::TestWithParam<RefinedMesh> {};
 

@@ -28,6 +28,7 @@ struct ShapeCase {
   std::string shape;
   int nodes;
 };
+void PrintTo(const ShapeCase& c, std::ostream* os) { *os << c.shape << c.nodes; }
 
 Vector2d naturalNode(const ShapeCase& s, int i) {
   if (s.shape == "quad") {
@@ -230,6 +231,8 @@ struct TubeModel {
   std::function<std::unique_ptr<model::Model>(const test::TubeInputs&)> build;
   double tolerance;
 };
+// Test names, not bytes, in ctest's listing.
+void PrintTo(const TubeModel& m, std::ostream* os) { *os << m.name; }
 
 class Example3 : public ::testing::TestWithParam<TubeModel> {};
 
