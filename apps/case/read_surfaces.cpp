@@ -309,7 +309,8 @@ std::vector<CableRow> readCableRows(CaseBuilder& b, const YAML::Node& n, const s
               : std::optional<int>(meridian ? 0 : -1);
     const SectionSpec* section = sec ? b.section(*sec, f.path("section")) : nullptr;
     if (!direction || *direction < 0 || !at) continue;
-    const int across = s.divisions[1 - *direction];
+    // Boundaries across the cables' direction; a meridian's hoops sit at its element ends.
+    const int across = meridian ? s.divisions[0] : s.divisions[1 - *direction];
     std::vector<YAML::Node> boundaries;
     if (at->IsSequence())
       boundaries = listItems(b.diag, *at, f.path("at"));

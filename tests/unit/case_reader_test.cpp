@@ -6,46 +6,21 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "apps/case/diagnostics.hpp"
 #include "libstruct/element/cable_element.hpp"
+#include "tests/support/case_files.hpp"
 
 namespace flexmoor::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Writes `text` to a fresh scratch directory as `file_name` and returns its path.
-std::string writeCase(const std::string& file_name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "flexmoor-case-reader";
-  fs::create_directories(dir);
-  const fs::path file = dir / file_name;
-  std::ofstream(file) << text;
-  return file.string();
-}
-
-// The messages of the CaseError that reading `path` throws (empty if it does not throw).
-std::vector<std::string> problems(const std::string& path) {
-  try {
-    readCase(path);
-  } catch (const CaseError& e) {
-    return e.messages();
-  }
-  return {};
-}
-
-bool anyContains(const std::vector<std::string>& messages, const std::string& part) {
-  return std::any_of(messages.begin(), messages.end(),
-                     [&part](const std::string& m) { return m.find(part) != std::string::npos; });
-}
-
-std::string joined(const std::vector<std::string>& messages) {
-  std::string s;
-  for (const std::string& m : messages) s += m + "\n";
-  return s;
-}
+using test::anyContains;
+using test::joined;
+using test::problems;
+using test::writeCase;
 
 const char* kExampleOne = R"(# Example 1, 8 linear elements
 name: ex1-test
