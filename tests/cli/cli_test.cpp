@@ -4,54 +4,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
+
+#include "tests/support/cli_run.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
-
-CliRun flexmoor(const std::string& args) {
-  const std::string command = std::string(FLEXMOOR_BINARY) + " " + args + " 2>&1";
-  CliRun r{0, ""};
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The value of "key": NUMBER in a summary.json.
-double summaryValue(const std::string& json, const std::string& key) {
-  const std::regex pattern("\"" + key + "\"\\s*:\\s*([-+0-9.eE]+)");
-  std::smatch m;
-  if (!std::regex_search(json, m, pattern)) return std::nan("");
-  return std::stod(m[1]);
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("flexmoor-cli-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using flexmoor::test::CliRun;
+using flexmoor::test::flexmoor;
+using flexmoor::test::readFile;
+using flexmoor::test::scratch;
+using flexmoor::test::summaryValue;
 
 // Table 1 of the dissertation (seed-tables.csv), centre sag and support movement in ft; the
 // issue asks for 1.5%.

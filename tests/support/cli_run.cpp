@@ -1,0 +1,45 @@
+#include "tests/support/cli_run.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace flexmoor::test {
+
+namespace fs = std::filesystem;
+
+CliRun flexmoor(const std::string& args) {
+  const std::string command = std::string(FLEXMOOR_BINARY) + " " + args + " 2>&1";
+  CliRun r{0, ""};
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+double summaryValue(const std::string& json, const std::string& key) {
+  const std::regex pattern("\"" + key + "\"\\s*:\\s*([-+0-9.eE]+)");
+  std::smatch m;
+  if (!std::regex_search(json, m, pattern)) return std::nan("");
+  return std::stod(m[1]);
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("flexmoor-cli-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+}  // namespace flexmoor::test
