@@ -23,11 +23,16 @@ any value may carry its own unit ("0.163 in", "500000 psi") and is converted onc
 
 A run executes the case's steps in order, each from the state the previous one left:
   relax   viscous relaxation (Appendix C) from an unstable, unstressed start to equilibrium
-  static  incremental/iterative Newton-Raphson or modified Newton (Eq. 5.1 convergence)
+  static  load increments with Newton-Raphson, modified Newton or BFGS (Eq. 5.1 convergence),
+          or arc-length control through limit points (control: arc_length)
+  modes   the lowest natural frequencies and mode shapes about the current, prestressed state
+  dynamic Newmark (Eq. 4.55-4.63) or HHT-alpha time steps with Newton iterations, by a
+          schedule of {dt, steps}; failed steps are halved and retried; progress is logged
 and writes
   DIR/<case>.nc         netCDF-4, CF-style names with units: coordinates, displacements,
-                        reactions and tensions, one record per step (flushed as it goes)
-  DIR/<case>-<n>.vtk    the deformed shape after step n, for ParaView
+                        velocities, reactions, tensions, membrane resultants and mode shapes,
+                        one record per step or per output time (flushed as it goes)
+  DIR/<case>-<n>.vtk    the deformed shape (and mode shapes) after step n, for ParaView
   DIR/summary.json      the case's declared summary quantities with their units
 
 Exit codes: 0 done; 1 usage error; 2 the case file is invalid (every problem is listed as
@@ -38,6 +43,9 @@ Examples:
   flexmoor cases
   flexmoor check cases/seed/ex1-suspended-cable-4xL3.yaml
   flexmoor run ex1-suspended-cable-8xL2 -o results
+
+The case-file format (materials, sections, lines, surfaces, supports, loads, histories, steps,
+summary) is described in README.md, and every shipped case under cases/ is a worked example.
 )";
 
 int usage(const std::string& what) {

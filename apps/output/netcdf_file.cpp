@@ -46,6 +46,11 @@ void NetcdfFile::putAttribute(int variable, const std::string& name, int value) 
         "writing attribute " + variableName(variable) + ":" + name);
 }
 
+void NetcdfFile::putAttribute(int variable, const std::string& name, double value) {
+  check(nc_put_att_double(id_, variable, name.c_str(), NC_DOUBLE, 1, &value),
+        "writing attribute " + variableName(variable) + ":" + name);
+}
+
 void NetcdfFile::endDefine() { check(nc_enddef(id_), "leaving define mode"); }
 
 void NetcdfFile::redefine() { check(nc_redef(id_), "entering define mode"); }

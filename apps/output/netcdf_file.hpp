@@ -30,6 +30,7 @@ class NetcdfFile {
   // A text attribute of a variable, or of the file for NC_GLOBAL.
   void putAttribute(int variable, const std::string& name, const std::string& value);
   void putAttribute(int variable, const std::string& name, int value);
+  void putAttribute(int variable, const std::string& name, double value);
   void endDefine();
   void redefine();
 

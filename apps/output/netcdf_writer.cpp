@@ -1,9 +1,12 @@
 #include "apps/output/netcdf_writer.hpp"
 
+#include <algorithm>
 #include <ctime>
 #include <stdexcept>
+#include <tuple>
 
 #include "apps/output/finite_value.hpp"
+#include "apps/output/membrane_resultants.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -39,7 +42,8 @@ NetcdfWriter::NetcdfWriter(const std::string& path, const model::Model& model, c
       node_count_(model.nodeCount()),
       element_count_(model.elementCount()),
       reference_(model.reference()),
-      force_unit_(unitNames(c.units).force) {
+      force_unit_(unitNames(c.units).force),
+      resultant_unit_(unitNames(c.units).force + "/" + unitNames(c.units).length) {
   if (node_count_ == 0 || element_count_ == 0)
     throw std::runtime_error(path + ": cannot write results of a model without nodes or elements");
   defineHeader(model, c);
@@ -152,6 +156,18 @@ void NetcdfWriter::definePoints(const ResultFrame& first) {
   tension_point_ = file_.defineVariable(
       "tension_point", NC_DOUBLE, {dim_step_, dim_point_},
       "axial force at the integration points, element by element in element order", force_unit_);
+  const bool membranes = std::any_of(first.elements.begin(), first.elements.end(),
+                                     [](const auto& r) { return !r.point_resultant.empty(); });
+  if (membranes)
+    for (auto [id, name, which] : {std::tuple(&resultant_max_, "membrane_resultant_max", "larger"),
+                                   std::tuple(&resultant_min_, "membrane_resultant_min", "smaller")}) {
+      *id = file_.defineVariable(name, NC_DOUBLE, {dim_step_, dim_element_},
+                                 std::string(which) +
+                                     " in-plane principal stress resultant of the membrane "
+                                     "(mean over its integration points, per current length)",
+                                 resultant_unit_);
+      file_.putAttribute(*id, "_FillValue", NC_FILL_DOUBLE);  // elements that are not membranes
+    }
   file_.endDefine();
   file_.put(element_point_count_, {0}, {element_points_.size()}, element_points_.data());
   file_.put(point_element_, {0}, {point_element.size()}, point_element.data());
@@ -219,6 +235,24 @@ void NetcdfWriter::gatherTensions(std::vector<Slab>& slabs, const ResultFrame& f
   slabs.push_back(std::move(points));
 }
 
+void NetcdfWriter::gatherResultants(std::vector<Slab>& slabs, const ResultFrame& frame) const {
+  if (resultant_max_ < 0) return;
+  const size_t elements = element_count_;
+  Slab larger{resultant_max_, {records_, 0}, {1, elements}, std::vector<double>(elements)};
+  Slab smaller{resultant_min_, {records_, 0}, {1, elements}, std::vector<double>(elements)};
+  for (size_t e = 0; e < elements; ++e) {
+    const auto n = principalResultants(frame.elements[e]);
+    larger.values[e] = n ? n->first : NC_FILL_DOUBLE;
+    smaller.values[e] = n ? n->second : NC_FILL_DOUBLE;
+    requireFinite(larger.values[e] + smaller.values[e], path(), [&] {
+      return "membrane_resultant[step " + std::to_string(records_) + ", element " +
+             std::to_string(e) + "]";
+    });
+  }
+  slabs.push_back(std::move(larger));
+  slabs.push_back(std::move(smaller));
+}
+
 // Modes of a modes step: circular frequencies and mass-normalised shapes, per record (records of
 // other steps keep the netCDF fill value there).
 void NetcdfWriter::defineModes(size_t count) {
@@ -275,6 +309,7 @@ void NetcdfWriter::write(const ResultFrame& frame) {
   gatherNodal(slabs, reaction_, frame.reactions);
   if (dim_point_ < 0) definePoints(frame);
   gatherTensions(slabs, frame);
+  gatherResultants(slabs, frame);
   gatherModes(slabs, frame);
 
   const int step_number = frame.step_index + 1;

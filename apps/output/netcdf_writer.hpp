@@ -62,13 +62,14 @@ class NetcdfWriter {
   void gatherNodal(std::vector<Slab>& slabs, const Vector3Variable& v,
                    const model::NodalField& field) const;
   void gatherTensions(std::vector<Slab>& slabs, const ResultFrame& frame) const;
+  void gatherResultants(std::vector<Slab>& slabs, const ResultFrame& frame) const;
   void putText(int variable, size_t index, const std::string& text);
 
   NetcdfFile file_;
   int node_count_ = 0;
   int element_count_ = 0;
   model::NodalField reference_;  // for position = reference + displacement
-  std::string force_unit_;
+  std::string force_unit_, resultant_unit_;
   std::vector<int> element_points_;  // integration points per element, from the first frame
   size_t records_ = 0;
 
@@ -79,6 +80,8 @@ class NetcdfWriter {
   int step_number_ = -1, step_name_ = -1, time_ = -1, load_factor_ = -1;
   Vector3Variable displacement_, position_, velocity_, reaction_;
   int tension_end_ = -1, tension_point_ = -1, element_point_count_ = -1, point_element_ = -1;
+  // Principal membrane resultants per element; defined when the first frame has membranes.
+  int resultant_max_ = -1, resultant_min_ = -1;
   int dim_mode_ = -1, angular_frequency_ = -1;  // defined with the first modes step
   size_t mode_count_ = 0;
   Vector3Variable mode_shape_;

@@ -1,6 +1,7 @@
 #include "apps/output/summary_quantities.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "apps/output/membrane_resultants.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -33,21 +34,13 @@ double maxTension(const SummarySpec& spec, const ResultFrame& frame) {
   return t;
 }
 
-// In-plane principal stress resultants of the element, from the mean resultant tensor of its
-// integration points: of the tensor's three eigenvalues, the one along the surface normal is zero
-// and the smallest in magnitude; the other two are returned, larger first.
 std::pair<double, double> principalResultants(const SummarySpec& spec, const ResultFrame& frame) {
   requireIndex(spec.element, static_cast<int>(frame.elements.size()), spec, "element");
-  const auto& points = frame.elements[spec.element].point_resultant;
-  if (points.empty())
+  const auto resultants = app::principalResultants(frame.elements[spec.element]);
+  if (!resultants)
     throw std::out_of_range("summary \"" + spec.name + "\": element " +
                             std::to_string(spec.element + 1) + " is not a membrane");
-  Eigen::Matrix3d mean = Eigen::Matrix3d::Zero();
-  for (const Eigen::Matrix3d& n : points) mean += n / static_cast<double>(points.size());
-  Eigen::Vector3d values = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(mean).eigenvalues();
-  std::sort(values.data(), values.data() + 3,
-            [](double a, double b) { return std::abs(a) > std::abs(b); });
-  return {std::max(values(0), values(1)), std::min(values(0), values(1))};
+  return *resultants;
 }
 
 double unscaled(const SummarySpec& spec, const model::Model& model, const ResultFrame& frame) {

@@ -1,5 +1,6 @@
 #include "apps/output/vtk_writer.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
 #include <numeric>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "apps/output/finite_value.hpp"
+#include "apps/output/membrane_resultants.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -95,15 +97,32 @@ void writeCells(std::ostream& os, const model::Model& model) {
   for (const VtkCell& c : cells) os << c.type << "\n";
 }
 
-void writeTension(std::ostream& os, const std::string& path, const ResultFrame& frame) {
-  os << "CELL_DATA " << frame.elements.size() << "\nSCALARS tension double 1\n"
-     << "LOOKUP_TABLE default\n";
+// One cell scalar: the mean tension of cables and springs, and the principal resultants of
+// membranes (zero on the other elements).
+template <class Value>
+void writeCellScalar(std::ostream& os, const std::string& path, const ResultFrame& frame,
+                     const char* name, Value value) {
+  os << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
   for (size_t e = 0; e < frame.elements.size(); ++e) {
-    const double t = meanTension(frame.elements[e]);
-    requireFinite(t, path,
-                  [&] { return "tension of element " + std::to_string(e) + " (0-based)"; });
-    os << t << "\n";
+    const double v = value(frame.elements[e]);
+    requireFinite(v, path,
+                  [&] { return std::string(name) + " of element " + std::to_string(e) + " (0-based)"; });
+    os << v << "\n";
   }
+}
+
+void writeCellData(std::ostream& os, const std::string& path, const ResultFrame& frame) {
+  os << "CELL_DATA " << frame.elements.size() << "\n";
+  writeCellScalar(os, path, frame, "tension", meanTension);
+  const bool membranes = std::any_of(frame.elements.begin(), frame.elements.end(),
+                                     [](const auto& r) { return !r.point_resultant.empty(); });
+  if (!membranes) return;
+  writeCellScalar(os, path, frame, "resultant_max", [](const element::ElementResult& r) {
+    return principalResultants(r).value_or(std::pair(0.0, 0.0)).first;
+  });
+  writeCellScalar(os, path, frame, "resultant_min", [](const element::ElementResult& r) {
+    return principalResultants(r).value_or(std::pair(0.0, 0.0)).second;
+  });
 }
 
 }  // namespace
@@ -129,7 +148,7 @@ void writeVtk(const std::string& path, const model::Model& model, const ResultFr
     text << "VECTORS " << name << " double\n";
     writeTriples(text, path, name.c_str(), frame.mode_shapes[k]);
   }
-  writeTension(text, path, frame);
+  writeCellData(text, path, frame);
 
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   file << text.str();

@@ -1,0 +1,78 @@
+// Membrane results as a user reads them: principal stress resultants per element in netCDF (fill
+// value on elements that are not membranes) and VTK, for a sheet under uniform biaxial stretch
+// whose resultant is known in closed form.
+#include <gtest/gtest.h>
+#include <netcdf.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "tests/support/cli_run.hpp"
+
+namespace {
+
+using flexmoor::test::flexmoor;
+
+// A 1 m square sheet of T6 triangles, edge cable along y = 0, its edges pulled out by 1 mm in x
+// and y: stretch lambda = 1.001 both ways, Green strain g = (lambda^2 - 1) / 2. The plane-stress
+// law on the Green strain gives S = E g / (1 - nu) both ways, and the resultant per current
+// length is S h0 (the stretch of the edge cancels that of the force).
+const char* kStretchedSheet = R"(name: stretched-sheet
+units: SI
+materials:
+  film: {type: linear_elastic, E: 1.0e6, nu: 0.3}
+sections:
+  skin: {material: film, thickness: 0.001, density: 1000}
+  edge: {material: film, area: 1.0e-6}
+lines:
+  - {name: hem, from: [0, 0, 0], to: [1, 0, 0], elements: 2, order: 3, section: edge}
+surfaces:
+  - {name: sheet, shape: rectangle, corner: [0, 0, 0], side1: [1, 0, 0], side2: [0, 1, 0],
+     divisions: [2, 2], element: T6, diagonals: centre, section: skin}
+supports:
+  - {nodes: {where: {x: 0}}, fix: [x]}
+  - {nodes: {where: {y: 0}}, fix: [y]}
+  - {nodes: {where: {x: 1}}, fix: [x], displacement: [0.001]}
+  - {nodes: {where: {y: 1}}, fix: [y], displacement: [0.001]}
+  - {nodes: sheet, fix: [z]}
+steps:
+  - static: {name: stretch}
+summary:
+  n_max: {quantity: resultant_max, element: sheet.3}
+  n_min: {quantity: resultant_min, element: sheet.3}
+)";
+
+TEST(MembraneOutput, PrincipalResultantsInNetcdfVtkAndSummaryMatchClosedForm) {
+  const auto dir = flexmoor::test::scratch("membrane-output");
+  std::ofstream(dir / "sheet.yaml") << kStretchedSheet;
+  const auto r = flexmoor("run " + (dir / "sheet.yaml").string() + " -o " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const double lambda = 1.001, g = (lambda * lambda - 1.0) / 2.0;
+  const double expected = 1.0e6 * g / (1.0 - 0.3) * 0.001;
+
+  int file = -1;
+  ASSERT_EQ(nc_open((dir / "stretched-sheet.nc").c_str(), NC_NOWRITE, &file), NC_NOERR);
+  const size_t elements = 2 + 8;  // the hem's two cables, then the sheet's eight triangles
+  for (const char* name : {"membrane_resultant_max", "membrane_resultant_min"}) {
+    int var = -1;
+    ASSERT_EQ(nc_inq_varid(file, name, &var), NC_NOERR) << name;
+    std::vector<double> n(elements);
+    ASSERT_EQ(nc_get_var_double(file, var, n.data()), NC_NOERR);
+    for (size_t e = 0; e < 2; ++e) EXPECT_EQ(n[e], NC_FILL_DOUBLE) << name << " cable " << e;
+    for (size_t e = 2; e < elements; ++e) EXPECT_NEAR(n[e] / expected, 1.0, 1e-9) << name << e;
+  }
+  nc_close(file);
+
+  const std::string json = flexmoor::test::readFile(dir / "summary.json");
+  EXPECT_NEAR(flexmoor::test::summaryValue(json, "n_max") / expected, 1.0, 1e-9) << json;
+  EXPECT_NEAR(flexmoor::test::summaryValue(json, "n_min") / expected, 1.0, 1e-9) << json;
+  EXPECT_NE(json.find("\"n_max\": \"N/m\""), std::string::npos) << json;
+
+  const std::string vtk = flexmoor::test::readFile(dir / "stretched-sheet-1.vtk");
+  EXPECT_NE(vtk.find("SCALARS resultant_max double 1"), std::string::npos);
+  EXPECT_NE(vtk.find("SCALARS resultant_min double 1"), std::string::npos);
+}
+
+}  // namespace
