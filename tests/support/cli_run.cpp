@@ -1,5 +1,8 @@
 #include "tests/support/cli_run.hpp"
 
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -40,6 +43,19 @@ fs::path scratch(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
+}
+
+std::string testName(std::string case_name) {
+  for (char& ch : case_name)
+    if (ch == '-') ch = '_';
+  return case_name;
+}
+
+std::string runNamedCase(const std::string& case_name) {
+  const fs::path dir = scratch(case_name + "-" + std::to_string(getpid()));
+  const CliRun r = flexmoor("run " + case_name + " -o " + dir.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return readFile(dir / "summary.json");
 }
 
 }  // namespace flexmoor::test

@@ -21,4 +21,20 @@ double summaryValue(const std::string& json, const std::string& key);
 // A fresh, empty scratch directory for one test.
 std::filesystem::path scratch(const std::string& name);
 
+// Runs a named case (`flexmoor run NAME`) into a scratch directory of its own for this process
+// (ctest -j runs the checks of one case side by side), expects exit code 0 and returns the text
+// of its summary.json.
+std::string runNamedCase(const std::string& case_name);
+
+// A case name as a GoogleTest name: "ex1-suspended-cable-8xL2" -> "ex1_suspended_cable_8xL2".
+std::string testName(std::string case_name);
+
+// Name generator for INSTANTIATE_TEST_SUITE_P over structs with a `case_name`.
+struct CaseParamName {
+  template <class Info>
+  std::string operator()(const Info& info) const {
+    return testName(info.param.case_name);
+  }
+};
+
 }  // namespace flexmoor::test
