@@ -39,12 +39,9 @@ class ArcLengthPath {
       VectorXd R;
       if (!tangentSolve(state, &R, P, dut)) return false;
       rec.residual_norm = residual_norm_;
-      if (it > 1) {
-        const Convergence& c = o_.convergence;
-        if ((!c.use_displacement || rec.displacement_norm < c.displacement_tolerance) &&
-            (!c.use_residual || rec.residual_norm < c.residual_tolerance))
-          return true;
-      }
+      if (it > 1 &&
+          converged(o_.convergence, rec.displacement_norm, rec.residual_norm, residual_floor_))
+        return true;
       const VectorXd duR = linear_.solve(R);
       // |du_total + duR + x dut|^2 + psi^2 (dlambda + x)^2 |P|^2 = ds^2
       const double psi2 = o_.arc.psi * o_.arc.psi * P.squaredNorm();
@@ -76,6 +73,7 @@ class ArcLengthPath {
     model::SparseMatrix K;
     const Residual r = outOfBalance(a_, state, &K);
     residual_norm_ = r.relative();
+    residual_floor_ = r.floor;
     if (!std::isfinite(residual_norm_)) return false;
     if (R) *R = r.free;
     model::State unit = state;
@@ -101,6 +99,7 @@ class ArcLengthPath {
   const StaticOptions& o_;
   LinearSolver linear_;
   double residual_norm_ = 0.0;
+  double residual_floor_ = 0.0;  // round-off floor at the last tangent (Residual::floor)
 };
 
 void refuseDisplacementControl(const model::Model& m) {

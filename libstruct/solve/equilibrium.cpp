@@ -1,5 +1,9 @@
 #include "libstruct/solve/equilibrium.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace flexmoor::solve {
 
 Residual outOfBalance(const model::Assembler& assembler, const model::State& state,
@@ -10,7 +14,22 @@ Residual outOfBalance(const model::Assembler& assembler, const model::State& sta
   Residual r;
   r.free = assembler.restrictToFree(P - F);
   r.scale = std::max(P.norm(), F.norm());
+  if (K && K->rows() > 0 && r.scale > 0.0) {
+    const model::NodalField x = assembler.model().reference() + state.displacement;
+    const double rms = std::sqrt(x.squaredNorm() / std::max<Eigen::Index>(x.size(), 1));
+    const double k = K->diagonal().cwiseAbs().maxCoeff();
+    r.floor = std::numeric_limits<double>::epsilon() * rms * k *
+              std::sqrt(static_cast<double>(K->rows())) / r.scale;
+  }
   return r;
+}
+
+bool converged(const Convergence& c, double displacement_norm, double residual_norm,
+               double residual_floor) {
+  const bool displacement_ok = !c.use_displacement || displacement_norm < c.displacement_tolerance;
+  const bool residual_ok =
+      !c.use_residual || residual_norm < std::max(c.residual_tolerance, residual_floor);
+  return displacement_ok && residual_ok;
 }
 
 double displacementNorm(const model::Assembler& assembler, const Eigen::VectorXd& du,

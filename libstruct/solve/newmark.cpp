@@ -79,13 +79,12 @@ class NewmarkStepper {
       if (alpha_ != 0.0) R.free -= alpha_ * previous_balance;
       // The forces pass through zero twice a period, so the residual is measured against the
       // largest force seen in the run, not the instantaneous one (round-off would stall Newton).
-      R.scale = std::max({R.scale, inertia_full.norm(), force_scale_});
+      const double scale = std::max({R.scale, inertia_full.norm(), force_scale_});
+      if (update) floor_ = R.floor * R.scale / scale;
+      R.scale = scale;
       rec.residual_norm = R.relative();
       if (it > 0) {
-        const Convergence& c = o_.convergence;
-        const bool d_ok = !c.use_displacement || rec.displacement_norm < c.displacement_tolerance;
-        const bool r_ok = !c.use_residual || rec.residual_norm < c.residual_tolerance;
-        if (d_ok && r_ok) {
+        if (converged(o_.convergence, rec.displacement_norm, rec.residual_norm, floor_)) {
           force_scale_ = R.scale;
           s = next;
           steps_since_update_ = refresh_each_step ? 0 : steps_since_update_ + 1;
@@ -135,6 +134,7 @@ class NewmarkStepper {
   double factor_h_ = -1.0;
   int steps_since_update_ = 0;
   double force_scale_ = 0.0;  // largest force norm of the accepted steps
+  double floor_ = 0.0;        // round-off floor of the residual at the last tangent
 };
 
 // Advances by h, halving on failure down to max_step_cuts levels.

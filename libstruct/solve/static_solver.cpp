@@ -11,13 +11,6 @@
 namespace flexmoor::solve {
 namespace {
 
-bool converged(const Convergence& c, double displacement_norm, double residual_norm) {
-  const bool displacement_ok =
-      !c.use_displacement || displacement_norm < c.displacement_tolerance;
-  const bool residual_ok = !c.use_residual || residual_norm < c.residual_tolerance;
-  return displacement_ok && residual_ok;
-}
-
 std::string failure(const StaticOptions& o, const IterationRecord& r, const std::string& why) {
   std::ostringstream s;
   s << "increment " << r.increment << " of " << o.increments << " (load factor " << r.load_factor
@@ -50,6 +43,7 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
                                                      : MatrixKind::Symmetric);
   model::SparseMatrix K;
   BfgsUpdates bfgs;
+  double floor = 0.0;  // round-off floor of the residual at the last tangent
   const double start = state.load_factor;
   for (int inc = 1; inc <= options.increments; ++inc) {
     const model::State converged_state = state;
@@ -64,9 +58,10 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
                           it % std::max(1, options.stiffness_update) == 0;
       const Residual R = outOfBalance(assembler, state, update ? &K : nullptr);
       rec.residual_norm = R.relative();
+      if (update) floor = R.floor;
       if (options.flavour == NewtonFlavour::Bfgs && it > 0) bfgs.add(du, previous_residual - R.free);
       if (it > 0) log.report(rec);
-      if (it > 0 && converged(options.convergence, rec.displacement_norm, rec.residual_norm)) {
+      if (it > 0 && converged(options.convergence, rec.displacement_norm, rec.residual_norm, floor)) {
         done = true;
         break;
       }
