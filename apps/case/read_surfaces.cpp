@@ -354,13 +354,20 @@ void generate(CaseBuilder& b, const SurfaceSpec& s, const std::vector<CableRow>&
           for (const Corners& c : splitCell(i, j, forwardDiagonal(s.diagonals, i, j, s.divisions))) {
             std::vector<int> nodes;
             for (const Eigen::Vector2d& rs : natural) {
+              // A triangle with two corners on one node (at the centre of a disc) has no area:
+              // skip it once its corners (nodes 0-2) are known, before its edge nodes are made,
+              // which no element would hold.
+              if (nodes.size() == 3 &&
+                  (nodes[0] == nodes[1] || nodes[1] == nodes[2] || nodes[2] == nodes[0]))
+                break;
               const Eigen::Vector2d p = c[0].cast<double>() + rs(0) * (c[1] - c[0]).cast<double>() +
                                         rs(1) * (c[2] - c[0]).cast<double>();
               nodes.push_back(maker.node(static_cast<int>(std::lround(L * p(0))),
                                          static_cast<int>(std::lround(L * p(1)))));
             }
-            // A triangle with two corners on one node (at the centre of a disc) has no area.
-            if (nodes[0] != nodes[1] && nodes[1] != nodes[2] && nodes[2] != nodes[0]) cells.push_back(nodes);
+            if (nodes.size() == natural.size() && nodes[0] != nodes[1] && nodes[1] != nodes[2] &&
+                nodes[2] != nodes[0])
+              cells.push_back(nodes);
           }
         }
         for (std::vector<int>& nodes : cells)

@@ -1,6 +1,6 @@
 #pragma once
 // In-plane principal stress resultants of a membrane element (force per current length), from
-// the mean of the resultant tensors at its integration points; shared by summary.json, netCDF
+// the principal resultants at its integration points, averaged; shared by summary.json, netCDF
 // and VTK so that all three report the same numbers.
 #include <optional>
 #include <utility>

@@ -18,11 +18,15 @@ bool LinearSolver::factorize(const model::SparseMatrix& A) {
 }
 
 bool LinearSolver::factorizeLu(const model::SparseMatrix& A) {
+  // Eigen's UmfPackLU keeps a reference to the matrix it factorised, and UMFPACK's solve reads it
+  // again (iterative refinement): factorise a copy that lives as long as the factorisation, so a
+  // caller may pass a temporary or a matrix that goes out of scope before solve().
+  lu_matrix_ = A;
   if (!analysed_lu_) {
-    lu_.analyzePattern(A);
+    lu_.analyzePattern(lu_matrix_);
     analysed_lu_ = true;
   }
-  lu_.factorize(A);
+  lu_.factorize(lu_matrix_);
   use_lu_ = true;
   return lu_.info() == Eigen::Success;
 }

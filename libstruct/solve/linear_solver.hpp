@@ -41,6 +41,7 @@ class LinearSolver {
   bool analysed_llt_ = false, analysed_lu_ = false, use_lu_ = false;
   Eigen::CholmodDecomposition<model::SparseMatrix, Eigen::Lower> llt_;
   Eigen::UmfPackLU<model::SparseMatrix> lu_;
+  model::SparseMatrix lu_matrix_;  // the matrix lu_ factorised (lu_ refers to it)
 };
 
 }  // namespace flexmoor::solve
