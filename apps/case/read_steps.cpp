@@ -44,6 +44,7 @@ void readFlavour(CaseBuilder& b, Fields& f, NewtonFlavour& flavour, bool with_bf
   std::vector<std::pair<std::string, NewtonFlavour>> choices = {
       {"full", NewtonFlavour::Full}, {"modified", NewtonFlavour::Modified}};
   if (with_bfgs) choices.emplace_back("bfgs", NewtonFlavour::Bfgs);
+  choices.emplace_back("self_corrective", NewtonFlavour::SelfCorrective);  // Eq. 4.20
   flavour = b.in.choice(*n, f.path("newton"), choices).value_or(flavour);
 }
 
@@ -107,6 +108,10 @@ void readStatic(CaseBuilder& b, Fields& f, solve::StaticOptions& o) {
   o.arc.desired_iterations = in.integerOr(f, "desired_iterations", 1, o.arc.desired_iterations);
   o.arc.max_increments = in.integerOr(f, "max_increments", 1, o.arc.max_increments);
   readFlavour(b, f, o.flavour, true);
+  if (arc && f.find("newton") && o.flavour != NewtonFlavour::Full)
+    b.diag.error(*f.find("newton"), f.path("newton") + ": arc length iterates with full Newton "
+                                                       "(got " + peekText(f.node(), "newton") +
+                                                       ", expected full or no newton: key)");
   readNewton(b, f, o.stiffness_update, o.max_iterations, o.convergence);
   if (const YAML::Node* n = f.find("pressure_stiffness"))
     o.pressure_load_stiffness =

@@ -62,6 +62,7 @@ class NewmarkStepper {
     VectorXd u = u_n;  // predictor: the displacement of the last step
     model::SparseMatrix K;
     const bool refresh_each_step = o_.flavour == NewtonFlavour::Full ||
+                                   o_.flavour == NewtonFlavour::SelfCorrective ||
                                    steps_since_update_ + 1 >= std::max(1, o_.stiffness_update) ||
                                    h != factor_h_;
     for (int it = 0; it <= o_.max_iterations; ++it) {
@@ -84,7 +85,8 @@ class NewmarkStepper {
       R.scale = scale;
       rec.residual_norm = R.relative();
       if (it > 0) {
-        if (converged(o_.convergence, rec.displacement_norm, rec.residual_norm, floor_)) {
+        if (o_.flavour == NewtonFlavour::SelfCorrective ||  // Eq. 4.20: one solve, accepted
+            converged(o_.convergence, rec.displacement_norm, rec.residual_norm, floor_)) {
           force_scale_ = R.scale;
           s = next;
           steps_since_update_ = refresh_each_step ? 0 : steps_since_update_ + 1;

@@ -8,6 +8,11 @@ enum class NewtonFlavour {
              // start of every increment
   Bfgs,      // quasi-Newton: the tangent of the increment's start (refreshed like Modified),
              // improved by BFGS rank-two updates between refreshes
+  SelfCorrective,  // Eq. 4.20: one solve per increment (or time step) with the tangent and the
+                   // full residual of its start, accepted without iterating; what is left out of
+                   // balance is carried into the next increment and corrected there, so the error
+                   // stays that of one Newton step, O(increment^2). Its residual is reported, not
+                   // tested.
 };
 
 // Convergence (Eq. 5.1): sqrt(sum du^2 / sum u^2) < displacement_tolerance, and/or

@@ -61,7 +61,9 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
       if (update) floor = R.floor;
       if (options.flavour == NewtonFlavour::Bfgs && it > 0) bfgs.add(du, previous_residual - R.free);
       if (it > 0) log.report(rec);
-      if (it > 0 && converged(options.convergence, rec.displacement_norm, rec.residual_norm, floor)) {
+      const bool self_corrective = options.flavour == NewtonFlavour::SelfCorrective;
+      if (it > 0 && (self_corrective || converged(options.convergence, rec.displacement_norm,
+                                                  rec.residual_norm, floor))) {
         done = true;
         break;
       }

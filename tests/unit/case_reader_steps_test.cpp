@@ -36,7 +36,7 @@ steps:
 
 TEST(CaseReaderSteps, StaticArcLengthAndNewtonOptions) {
   const Case c = readCase(writeCase("arc.yaml", cableCase(R"(  - static: {name: up, load_factor: 2, increments: 4, control: arc_length, psi: 0.5,
-               desired_iterations: 6, max_increments: 300, newton: bfgs, max_iterations: 40,
+               desired_iterations: 6, max_increments: 300, newton: full, max_iterations: 40,
                tolerance: 1e-7, criterion: both, pressure_stiffness: true}
 )")));
   ASSERT_EQ(c.steps.size(), 1u);
@@ -48,7 +48,7 @@ TEST(CaseReaderSteps, StaticArcLengthAndNewtonOptions) {
   EXPECT_DOUBLE_EQ(o.arc.psi, 0.5);
   EXPECT_EQ(o.arc.desired_iterations, 6);
   EXPECT_EQ(o.arc.max_increments, 300);
-  EXPECT_EQ(o.flavour, solve::NewtonFlavour::Bfgs);
+  EXPECT_EQ(o.flavour, solve::NewtonFlavour::Full);
   EXPECT_EQ(o.max_iterations, 40);
   EXPECT_DOUBLE_EQ(o.convergence.displacement_tolerance, 1e-7);
   EXPECT_TRUE(o.convergence.use_displacement && o.convergence.use_residual);
@@ -103,6 +103,7 @@ TEST(CaseReaderSteps, StepMistakesAreReportedWithTheirLines) {
   - dynamic: {}
   - relax: {}
   - vibrate: {}
+  - static: {control: arc_length, newton: self_corrective}
 )",
                                                                       R"(  too_high: {quantity: frequency, mode: 4, step: 2}
   not_modes: {quantity: frequency, mode: 1}
@@ -121,11 +122,14 @@ TEST(CaseReaderSteps, StepMistakesAreReportedWithTheirLines) {
   EXPECT_TRUE(anyContains(m, "bad-steps.yaml:17: steps[5].dynamic.hht_alpha: given with beta"))
       << joined(m);
   EXPECT_TRUE(anyContains(m, "steps[5].dynamic.newton: unknown value (got 'bfgs', expected one "
-                             "of: full, modified)"))
+                             "of: full, modified, self_corrective)"))
       << joined(m);
   EXPECT_TRUE(anyContains(m, "bad-steps.yaml:18: steps[6].dynamic: missing key 'schedule'"))
       << joined(m);
   EXPECT_TRUE(anyContains(m, "bad-steps.yaml:20: steps[8]: not a step (got 'vibrate'")) << joined(m);
+  EXPECT_TRUE(anyContains(m, "bad-steps.yaml:21: steps[9].static.newton: arc length iterates with "
+                             "full Newton (got self_corrective"))
+      << joined(m);
   EXPECT_TRUE(anyContains(m, "summary.too_high.mode: beyond the modes computed (got 4, expected 1 "
                              "to 3"))
       << joined(m);

@@ -211,7 +211,7 @@ summary:
       << joined(m);
   EXPECT_TRUE(anyContains(m,
                           "bad.yaml:12: steps[1].static.newton: unknown value (got 'ful', "
-                          "expected one of: full, modified, bfgs; did you mean 'full'?)"))
+                          "expected one of: full, modified, bfgs, self_corrective; did you mean 'full'?)"))
       << joined(m);
 }
 

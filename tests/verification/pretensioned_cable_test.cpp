@@ -63,32 +63,51 @@ solve::StaticOptions tightNewton(int increments) {
 
 // `elements` two-node elements (an even number, so a node sits at mid-span). The pull is held by
 // a constant history, so it is applied in full from the start whatever the load factor; the
-// point load scales with the load factor. The solve pretensions first (load factor 0: a straight,
-// unstressed cable has no transverse stiffness, and the solver's regularisation carries the
-// unloaded transverse dofs), then applies the load in `increments` Newton increments.
-void expectClosedForm(int elements, int increments) {
-  const TautString s;
-  const ClosedForm exact = solveClosedForm(s);
-
+// point load scales with the load factor.
+struct LoadedString {
   model::Model m;
+  std::vector<int> nodes;
+  int mid = -1;
+};
+
+std::unique_ptr<LoadedString> loadedString(const TautString& s, int elements) {
+  auto out = std::make_unique<LoadedString>();
+  model::Model& m = out->m;
   const int left = m.addNode(Eigen::Vector3d::Zero());
   const int right = m.addNode(Eigen::Vector3d(s.span, 0.0, 0.0));
-  const std::vector<int> nodes = addStraightCable(
+  out->nodes = addStraightCable(
       m, left, right, elements, 2, linearElasticSection(s.E, s.area, 0.0, material::Compression::Carry));
-  const int mid = nodes[nodes.size() / 2];
+  out->mid = out->nodes[out->nodes.size() / 2];
   pin(m, left);
   pin(m, right);
   const auto held = std::make_shared<model::TableFunction>(std::vector<double>{0.0},
                                                            std::vector<double>{1.0});
   m.constrain(right, 0, s.pull, held);
-  m.addNodalLoad(mid, Eigen::Vector3d(0.0, 0.0, -s.load));
+  m.addNodalLoad(out->mid, Eigen::Vector3d(0.0, 0.0, -s.load));
   m.numberEquations();
-  const model::Assembler assembler(m);
-  model::State state = m.initialState();
+  return out;
+}
 
+// Pretensions the string: load factor 0 (a straight, unstressed cable has no transverse
+// stiffness, and the solver's regularisation carries the unloaded transverse dofs).
+model::State pretensioned(const model::Assembler& assembler) {
+  model::State state = assembler.model().initialState();
   solve::StaticOptions pretension = tightNewton(1);
   pretension.load_factor = 0.0;
   solve::solveStatic(assembler, state, pretension);
+  return state;
+}
+
+// The solve pretensions first, then applies the load in `increments` Newton increments.
+void expectClosedForm(int elements, int increments) {
+  const TautString s;
+  const ClosedForm exact = solveClosedForm(s);
+  const auto string = loadedString(s, elements);
+  const model::Model& m = string->m;
+  const std::vector<int>& nodes = string->nodes;
+  const int mid = string->mid;
+  const model::Assembler assembler(m);
+  model::State state = pretensioned(assembler);
   const double pretension_force = assembler.elementResults(state)[0].end_tension[0];
   const solve::StaticReport report = solve::solveStatic(assembler, state, tightNewton(increments));
 
@@ -129,6 +148,38 @@ TEST(PretensionedCable, PointLoadMatchesClosedForm) {
 // depend on the load path).
 TEST(PretensionedCable, PointLoadInIncrementsMatchesClosedForm) {
   expectClosedForm(8, 4);
+}
+
+// The self-corrective incremental scheme (Eq. 4.20): one solve per increment with the full
+// residual, no iterations. Each increment is one Newton step from the last state towards the next
+// equilibrium, so it leaves an error of the order of the square of its distance, O(dlambda^2),
+// and the next increment corrects it rather than adding to it (the purely incremental scheme of
+// Eq. 4.19 would accumulate a first-order error): halving the increment quarters the error. One
+// Newton solve from its end lands on the closed form.
+TEST(PretensionedCable, SelfCorrectiveErrorIsSecondOrderInTheIncrement) {
+  const TautString s;
+  const ClosedForm exact = solveClosedForm(s);
+  const auto string = loadedString(s, 8);
+  const model::Assembler assembler(string->m);
+  std::vector<double> errors;
+  for (int increments : {16, 32, 64}) {
+    model::State state = pretensioned(assembler);
+    solve::StaticOptions o;
+    o.increments = increments;
+    o.flavour = solve::NewtonFlavour::SelfCorrective;
+    const solve::StaticReport report = solve::solveStatic(assembler, state, o);
+    ASSERT_EQ(static_cast<int>(report.increments.size()), increments);
+    for (const auto& inc : report.increments) EXPECT_EQ(inc.iterations, 1);
+    errors.push_back(std::abs(-state.displacement(2, string->mid) - exact.deflection) /
+                     exact.deflection);
+    solve::solveStatic(assembler, state, tightNewton(1));  // corrects what was left
+    EXPECT_NEAR(-state.displacement(2, string->mid), exact.deflection, 1e-8 * exact.deflection);
+  }
+  std::cout << "[ self-corrective ] deflection error at 16, 32, 64 increments: " << errors[0]
+            << ", " << errors[1] << ", " << errors[2] << "\n";
+  EXPECT_NEAR(errors[0] / errors[1], 4.0, 0.4);
+  EXPECT_NEAR(errors[1] / errors[2], 4.0, 0.4);
+  EXPECT_LT(errors[2], 1e-4);
 }
 
 }  // namespace
