@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "libstruct/element/nodal_mass.hpp"
 #include "libstruct/shape/gauss_legendre.hpp"
 #include "libstruct/shape/lagrange_1d.hpp"
 
@@ -93,10 +94,7 @@ void AxisymmetricMembrane<N>::mass(const ElementContext& c, MassKind kind,
     const double dA = (X * L::derivatives(rule.points[q])).norm() * X.row(0).dot(Lv) * rule.weights[q];
     m += (section_.density * section_.thickness * dA) * (Lv * Lv.transpose());  // Eq. 4.40
   }
-  if (kind == MassKind::Lumped) m = (m.diagonal() * (m.sum() / m.diagonal().sum())).asDiagonal();
-  M.setZero(3 * N, 3 * N);
-  for (int I = 0; I < N; ++I)
-    for (int J = 0; J < N; ++J) M.block<3, 3>(3 * I, 3 * J).diagonal().setConstant(m(I, J));
+  nodalMass<N>(m, kind, M);
 }
 
 template <int N>

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "libstruct/element/nodal_mass.hpp"
 #include "libstruct/shape/gauss_legendre.hpp"
 #include "libstruct/shape/lagrange_1d.hpp"
 
@@ -77,16 +78,7 @@ void CableElement<N>::mass(const ElementContext& c, MassKind kind, Eigen::Matrix
     const double ds0 = (X * L::derivatives(rule.points[q])).norm() * rule.weights[q];
     m += (section_.density * section_.area * ds0) * (Lv * Lv.transpose());  // Eq. 4.49
   }
-  if (kind == MassKind::Lumped) {
-    // Row-sum lumping would give negative masses at the corners of higher orders; the diagonal
-    // is scaled to keep the total mass instead (HRZ lumping).
-    const double total = m.sum();
-    const double diagonal = m.diagonal().sum();
-    m = (m.diagonal() * (total / diagonal)).asDiagonal();
-  }
-  M.setZero(3 * N, 3 * N);
-  for (int I = 0; I < N; ++I)
-    for (int J = 0; J < N; ++J) M.block<3, 3>(3 * I, 3 * J).diagonal().setConstant(m(I, J));
+  nodalMass<N>(m, kind, M);
 }
 
 template <int N>

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "libstruct/element/nodal_mass.hpp"
 #include "libstruct/shape/quad_shape.hpp"
 #include "libstruct/shape/triangle_shape.hpp"
 
@@ -99,10 +100,7 @@ void MembraneElement<Shape>::mass(const ElementContext& c, MassKind kind,
     const double dA = std::sqrt((x.transpose() * x).determinant()) * rule_.weights[q];
     m += (section_.density * section_.thickness * dA) * (Mv * Mv.transpose());  // Eq. 4.40
   }
-  if (kind == MassKind::Lumped) m = (m.diagonal() * (m.sum() / m.diagonal().sum())).asDiagonal();
-  M.setZero(3 * N, 3 * N);
-  for (int I = 0; I < N; ++I)
-    for (int J = 0; J < N; ++J) M.block<3, 3>(3 * I, 3 * J).diagonal().setConstant(m(I, J));
+  nodalMass<N>(m, kind, M);
 }
 
 template <class Shape>

@@ -133,6 +133,20 @@ TEST_P(MembraneShapes, RigidRotationGivesZeroStrain) {
   EXPECT_LT(f_rotated.norm(), 1e-10 * f_stretched.norm());
 }
 
+// Lumped mass (HRZ): diagonal, every entry positive (also at the corners of Q8, Q12, T6, T10,
+// where row sums would be negative or zero), the same total per direction as the consistent mass.
+TEST_P(MembraneShapes, LumpedMassIsPositiveDiagonalWithTheConsistentTotal) {
+  build(linearElastic());
+  const model::State s(GetParam().nodes);
+  Eigen::MatrixXd consistent, lumped;
+  element_->mass({X_, s, 0}, element::MassKind::Consistent, consistent);
+  element_->mass({X_, s, 0}, element::MassKind::Lumped, lumped);
+  const Eigen::MatrixXd diagonal = lumped.diagonal().asDiagonal();
+  EXPECT_EQ((lumped - diagonal).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT(lumped.diagonal().minCoeff(), 0.0);
+  EXPECT_NEAR(lumped.sum(), consistent.sum(), 1e-12 * consistent.sum());
+}
+
 // Patch test: a flat, distorted (straight-sided) element under the displacement of a uniform
 // biaxial stretch with shear reproduces the uniform stress exactly at every integration point
 // and its nodal forces sum to zero. Reference: the plane-stress law at the imposed Green strain.

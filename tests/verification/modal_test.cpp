@@ -25,9 +25,11 @@
 namespace flexmoor::test {
 namespace {
 
-solve::ModalResult allModes(const model::Assembler& assembler, const model::State& state) {
+solve::ModalResult allModes(const model::Assembler& assembler, const model::State& state,
+                             element::MassKind mass = element::MassKind::Consistent) {
   solve::ModalOptions o;
   o.modes = assembler.equationCount();
+  o.mass = mass;
   return solve::naturalModes(assembler, state, o);
 }
 
@@ -78,6 +80,35 @@ TEST(Modal, TautStringMatchesConsistentMassClosedForm) {
   EXPECT_NEAR(r.omega[transverse[0]] / first, 1.0, 1e-8);
   EXPECT_LT(transverse_error, 1e-8);
   EXPECT_LT(axial_error, 1e-8);
+}
+
+// Lumped mass (half of each element's mass at each end node) turns the string into the classic
+// finite-difference chain: omega_k = (2 / h0) sqrt(S / rho) sin(k pi / (2 n)) in reference
+// quantities (S the second Piola stress, h0 = L0 / n); it lies below the exact string, where the
+// consistent mass lies above.
+TEST(Modal, TautStringWithLumpedMassMatchesFiniteDifferenceClosedForm) {
+  TautCableInputs in;
+  in.planar = true;
+  const TautCable cable = makeTautCable(in);
+  const model::Assembler assembler(*cable.model);
+  const model::State state = pretension(cable, assembler);
+  const solve::ModalResult lumped = allModes(assembler, state, element::MassKind::Lumped);
+  const solve::ModalResult consistent = allModes(assembler, state);
+  const std::vector<int> transverse = modesAlong(lumped, {2});
+  const std::vector<int> transverse_consistent = modesAlong(consistent, {2});
+  ASSERT_EQ(transverse.size(), 11u);
+  const double h0 = in.length / in.elements;
+  double worst = 0.0;
+  for (size_t i = 0; i < transverse.size(); ++i) {
+    const int k = static_cast<int>(i) + 1;
+    const double expected = 2.0 / h0 * std::sqrt(in.secondPiola() / in.density) *
+                            std::sin(k * M_PI / (2.0 * in.elements));
+    worst = std::max(worst, std::abs(lumped.omega[transverse[i]] / expected - 1.0));
+    const double exact = k * M_PI / in.length * std::sqrt(in.secondPiola() / in.density);
+    EXPECT_LT(lumped.omega[transverse[i]], exact) << "mode " << k;
+    EXPECT_GT(consistent.omega[transverse_consistent[i]], exact) << "mode " << k;
+  }
+  EXPECT_LT(worst, 1e-8);
 }
 
 // Mass orthonormality of the returned shapes, phi_i^T M phi_j = delta_ij to 1e-8, on the 3-D
