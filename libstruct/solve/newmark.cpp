@@ -38,7 +38,8 @@ class NewmarkStepper {
 
   // Damping force C v on the free dofs, C = rayleigh_mass M + rayleigh_stiffness K0.
   VectorXd damping(const VectorXd& v_free) const {
-    VectorXd f = o_.rayleigh_mass * (M_ * v_free);
+    VectorXd f = VectorXd::Zero(v_free.size());
+    if (o_.rayleigh_mass != 0.0) f += o_.rayleigh_mass * (M_ * v_free);
     if (o_.rayleigh_stiffness != 0.0) f += o_.rayleigh_stiffness * (K0_ * v_free);
     return f;
   }
@@ -95,12 +96,15 @@ class NewmarkStepper {
       }
       if (!std::isfinite(rec.residual_norm) || it == o_.max_iterations) return false;
       if (update) {
-        // Effective tangent (Eq. 4.63): (1 + alpha) (K_T + gamma / (beta h) C) + a0 M
-        model::SparseMatrix Keff = (1.0 + alpha_) * K + a0 * M_;
+        // Effective tangent (Eq. 4.63): (1 + alpha) (K_T + gamma / (beta h) C) + a0 M, with
+        // C = a_M M + a_K K0. K_T, M and K0 are assembled on the assembler's one pattern, so the
+        // sum is taken coefficient by coefficient, without a sparse merge or an allocation.
         const double c = (1.0 + alpha_) * gamma_ / (beta_ * h);
-        if (o_.rayleigh_mass != 0.0) Keff += (c * o_.rayleigh_mass) * M_;
-        if (o_.rayleigh_stiffness != 0.0) Keff += (c * o_.rayleigh_stiffness) * K0_;
-        if (!linear_.factorize(Keff)) return false;
+        Keff_ = K;
+        Keff_.coeffs() = (1.0 + alpha_) * K.coeffs() + (a0 + c * o_.rayleigh_mass) * M_.coeffs();
+        if (o_.rayleigh_stiffness != 0.0)
+          Keff_.coeffs() += (c * o_.rayleigh_stiffness) * K0_.coeffs();
+        if (!linear_.factorize(Keff_)) return false;
         factor_h_ = h;
         ++report.tangent_updates;
       }
@@ -131,7 +135,7 @@ class NewmarkStepper {
   const model::Assembler& assembler_;
   const DynamicOptions& o_;
   double gamma_, beta_, alpha_;
-  model::SparseMatrix M_, K0_;
+  model::SparseMatrix M_, K0_, Keff_;  // on the assembler's pattern
   LinearSolver linear_;
   double factor_h_ = -1.0;
   int steps_since_update_ = 0;

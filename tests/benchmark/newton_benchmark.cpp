@@ -145,7 +145,7 @@ BENCHMARK(ElementSweepCableChain)
 // steps/s counter; its inverse is per step).
 template <class Structure>
 void newmarkSteps(benchmark::State& bench, Structure& structure, double dt) {
-  constexpr int kSteps = 5;
+  constexpr int kSteps = 20;
   model::Assembler assembler(structure.model);
   solve::DynamicOptions o;
   o.schedule = {{dt, kSteps}};
