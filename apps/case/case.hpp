@@ -18,7 +18,8 @@ enum class UnitSystem { SI, US };
 struct UnitNames {
   std::string length, mass, time, force, pressure;
 };
-UnitNames unitNames(UnitSystem system);  // {"ft","slug","s","lbf","lbf/ft^2"} or {"m","kg","s","N","Pa"}
+UnitNames unitNames(
+    UnitSystem system);  // {"ft","slug","s","lbf","lbf/ft^2"} or {"m","kg","s","N","Pa"}
 
 struct SourceLocation {
   std::string file;
@@ -74,7 +75,7 @@ struct Case {
   std::vector<SummarySpec> summary;
   std::map<std::string, std::vector<int>> node_sets;  // named sets, 0-based nodes
   std::vector<int> node_ids;  // the file's id of each model node (explicit or generated)
-  std::map<std::string, std::vector<int>> lines;  // nodes of each named line, start to end
+  std::map<std::string, std::vector<int>> lines;         // nodes of each named line, start to end
   std::map<std::string, std::vector<int>> element_sets;  // named groups (surfaces, lines), 0-based
 };
 

@@ -13,7 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::vector<std::string> kTopKeys = {
-    "name",     "title",     "units",    "materials", "sections", "nodes", "lines", "surfaces",
+    "name",     "title",     "units",    "materials", "sections", "nodes", "lines",  "surfaces",
     "elements", "node_sets", "supports", "histories", "loads",    "steps", "summary"};
 
 YAML::Node loadYaml(Diagnostics& diag) {

@@ -51,12 +51,13 @@ std::optional<int> nodeAt(CaseBuilder& b, const YAML::Node& n, const std::string
     if (nearest < 0 || d < distance) std::tie(nearest, distance) = std::pair(node, d);
   }
   if (nearest >= 0 && distance <= positionTolerance(b)) return nearest;
-  b.diag.error(*at, f.path("at") + ": no node there (got " + describeNode(*at) + ", expected " +
-                        "the position of a node" +
-                        (nearest < 0 ? std::string()
-                                     : "; the nearest, node " + std::to_string(b.c.node_ids[nearest]) +
-                                           ", is " + std::to_string(distance) + " away") +
-                        ")");
+  b.diag.error(*at,
+               f.path("at") + ": no node there (got " + describeNode(*at) + ", expected " +
+                   "the position of a node" +
+                   (nearest < 0 ? std::string()
+                                : "; the nearest, node " + std::to_string(b.c.node_ids[nearest]) +
+                                      ", is " + std::to_string(distance) + " away") +
+                   ")");
   return std::nullopt;
 }
 
@@ -172,8 +173,9 @@ std::optional<std::vector<int>> nodeListRef(CaseBuilder& b, const YAML::Node& n,
       return surface->second;
   }
   if (n.IsMap() && n["where"]) return nodesWhere(b, n, path);
-  const bool one_node = (n.IsMap() && n["at"]) ||
-                        (n.IsScalar() && (parseId(n.Scalar()) || n.Scalar().find('.') != std::string::npos));
+  const bool one_node =
+      (n.IsMap() && n["at"]) ||
+      (n.IsScalar() && (parseId(n.Scalar()) || n.Scalar().find('.') != std::string::npos));
   if (!one_node) {
     b.diag.error(n, path + ": not a node list (got " + describeNode(n) +
                         ", expected all, a node set, a line, a surface, {where: {x: X}}, " +

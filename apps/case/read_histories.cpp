@@ -38,8 +38,7 @@ std::shared_ptr<const model::TimeFunction> readTable(CaseBuilder& b, Fields& f) 
                          " times (expected one value per time, at least one)");
     return nullptr;
   }
-  if (std::adjacent_find(times.begin(), times.end(), std::greater_equal<double>()) !=
-      times.end()) {
+  if (std::adjacent_find(times.begin(), times.end(), std::greater_equal<double>()) != times.end()) {
     b.diag.error(*t, f.path("times") + ": not increasing (expected strictly increasing times)");
     return nullptr;
   }
@@ -50,7 +49,8 @@ std::shared_ptr<const model::TimeFunction> readHistory(CaseBuilder& b, const Map
   const std::string path = childPath("histories", e.key);
   const std::string type = peekText(e.value, "type");
   Fields f(b.diag, e.value, path,
-           type == "sine"    ? std::vector<std::string>{"type", "amplitude", "period", "phase", "offset"}
+           type == "sine"
+               ? std::vector<std::string>{"type", "amplitude", "period", "phase", "offset"}
            : type == "ramp"  ? std::vector<std::string>{"type", "start", "duration"}
            : type == "table" ? std::vector<std::string>{"type", "times", "values"}
                              : std::vector<std::string>{"type"});

@@ -48,7 +48,8 @@ MaterialLaws readMaterial(CaseBuilder& b, const MapEntry& e) {
       if (!nu) return {};
     }
     if (!modulus) return {};
-    MaterialLaws laws{std::make_shared<material::LinearElasticCable>(*modulus, compression), nullptr};
+    MaterialLaws laws{std::make_shared<material::LinearElasticCable>(*modulus, compression),
+                      nullptr};
     if (nu) laws.membrane = std::make_shared<material::LinearElasticPlaneStress>(*modulus, *nu);
     return laws;
   }
@@ -76,8 +77,9 @@ std::optional<SectionSpec> readSection(CaseBuilder& b, const MapEntry& e) {
   const YAML::Node* area = f.find("area");
   const YAML::Node* thickness = f.find("thickness");
   if (area && thickness) {
-    b.diag.error(*thickness, f.path() + ": give either area (a cable section) or thickness (a "
-                                        "membrane section), not both");
+    b.diag.error(*thickness, f.path() +
+                                 ": give either area (a cable section) or thickness (a "
+                                 "membrane section), not both");
     return std::nullopt;
   }
   s.is_membrane = thickness != nullptr;

@@ -234,8 +234,12 @@ void readElement(CaseBuilder& b, const YAML::Node& item, const std::string& path
     element = readPointMass(b, f);
   else if (const YAML::Node* t = f.require("type"))
     b.in.choice<int>(*t, f.path("type"),
-                     {{"cable", 0}, {"membrane", 1}, {"axisymmetric_membrane", 2},
-                      {"hoop_cable", 3}, {"spring", 4}, {"point_mass", 5}});
+                     {{"cable", 0},
+                      {"membrane", 1},
+                      {"axisymmetric_membrane", 2},
+                      {"hoop_cable", 3},
+                      {"spring", 4},
+                      {"point_mass", 5}});
   b.element_types.push_back(element ? type : "");
   if (element) b.model.addElement(std::move(element));
 }

@@ -99,19 +99,22 @@ void readStatic(CaseBuilder& b, Fields& f, solve::StaticOptions& o) {
   const bool arc = peekText(f.node(), "control") == "arc_length";
   for (const char* key : {"psi", "desired_iterations", "max_increments"})
     if (f.find(key) && !arc)
-      b.diag.error(*f.find(key), f.path(key) + ": only used with control: arc_length (got " +
-                                     (f.find("control") ? "control: " + peekText(f.node(), "control")
-                                                        : std::string("no control: key")) +
-                                     ")");
+      b.diag.error(*f.find(key),
+                   f.path(key) + ": only used with control: arc_length (got " +
+                       (f.find("control") ? "control: " + peekText(f.node(), "control")
+                                          : std::string("no control: key")) +
+                       ")");
   if (const YAML::Node* n = f.find("psi"))  // 0 cylindrical .. 1 spherical
     o.arc.psi = numberIn(b, *n, f.path("psi"), 0.0, 1.0, "0 to 1").value_or(o.arc.psi);
   o.arc.desired_iterations = in.integerOr(f, "desired_iterations", 1, o.arc.desired_iterations);
   o.arc.max_increments = in.integerOr(f, "max_increments", 1, o.arc.max_increments);
   readFlavour(b, f, o.flavour, true);
   if (arc && f.find("newton") && o.flavour != NewtonFlavour::Full)
-    b.diag.error(*f.find("newton"), f.path("newton") + ": arc length iterates with full Newton "
-                                                       "(got " + peekText(f.node(), "newton") +
-                                                       ", expected full or no newton: key)");
+    b.diag.error(*f.find("newton"), f.path("newton") +
+                                        ": arc length iterates with full Newton "
+                                        "(got " +
+                                        peekText(f.node(), "newton") +
+                                        ", expected full or no newton: key)");
   readNewton(b, f, o.stiffness_update, o.max_iterations, o.convergence);
   if (const YAML::Node* n = f.find("pressure_stiffness"))
     o.pressure_load_stiffness =
@@ -144,7 +147,8 @@ std::optional<double> readShift(CaseBuilder& b, const YAML::Node& n, const std::
 // Lowest modes about the current state, Chapter IV.
 void readModes(CaseBuilder& b, Fields& f, solve::ModalOptions& o) {
   o.modes = b.in.integerOr(f, "count", 1, o.modes);
-  if (const YAML::Node* n = f.find("shift")) o.shift = readShift(b, *n, f.path("shift")).value_or(o.shift);
+  if (const YAML::Node* n = f.find("shift"))
+    o.shift = readShift(b, *n, f.path("shift")).value_or(o.shift);
   if (const YAML::Node* n = f.find("mass"))
     o.mass = b.in.choice(*n, f.path("mass"), massChoices()).value_or(o.mass);
   o.tolerance = b.in.quantityOr(f, "tolerance", kind::kNumber, Limit::Positive, o.tolerance);
@@ -173,8 +177,9 @@ void readSchedule(CaseBuilder& b, Fields& f, std::vector<solve::TimeSegment>& sc
   if (!list) {
     if (!direct) {
       if (f.isMap())
-        b.diag.error(f.node(), f.path() + ": missing key 'schedule' (expected schedule: "
-                                          "[{dt, steps}, ...] or dt and steps)");
+        b.diag.error(f.node(), f.path() +
+                                   ": missing key 'schedule' (expected schedule: "
+                                   "[{dt, steps}, ...] or dt and steps)");
       return;
     }
     if (const auto segment = readSegment(b, f)) schedule.push_back(*segment);
@@ -233,23 +238,47 @@ const std::vector<std::string>& keysOf(StepSpec::Kind kind) {
   static const std::vector<std::string> relax = {
       "name",      "load_factor",        "tolerance", "damping",       "initial_damping_factor",
       "decrement", "residual_tolerance", "max_steps", "max_iterations"};
-  static const std::vector<std::string> statics = {
-      "name",          "load_factor",    "increments",         "control",
-      "psi",           "desired_iterations", "max_increments", "newton",
-      "stiffness_update", "tolerance",   "residual_tolerance", "criterion",
-      "max_iterations", "pressure_stiffness"};
+  static const std::vector<std::string> statics = {"name",
+                                                   "load_factor",
+                                                   "increments",
+                                                   "control",
+                                                   "psi",
+                                                   "desired_iterations",
+                                                   "max_increments",
+                                                   "newton",
+                                                   "stiffness_update",
+                                                   "tolerance",
+                                                   "residual_tolerance",
+                                                   "criterion",
+                                                   "max_iterations",
+                                                   "pressure_stiffness"};
   static const std::vector<std::string> modes = {"name", "count", "shift", "mass", "tolerance"};
-  static const std::vector<std::string> dynamic = {
-      "name",       "schedule",         "dt",        "steps",
-      "gamma",      "beta",             "hht_alpha", "newton",
-      "stiffness_update", "tolerance",  "residual_tolerance", "criterion",
-      "max_iterations", "mass",         "rayleigh",  "max_step_cuts",
-      "output_every"};
+  static const std::vector<std::string> dynamic = {"name",
+                                                   "schedule",
+                                                   "dt",
+                                                   "steps",
+                                                   "gamma",
+                                                   "beta",
+                                                   "hht_alpha",
+                                                   "newton",
+                                                   "stiffness_update",
+                                                   "tolerance",
+                                                   "residual_tolerance",
+                                                   "criterion",
+                                                   "max_iterations",
+                                                   "mass",
+                                                   "rayleigh",
+                                                   "max_step_cuts",
+                                                   "output_every"};
   switch (kind) {
-    case StepSpec::Kind::Relax: return relax;
-    case StepSpec::Kind::Static: return statics;
-    case StepSpec::Kind::Modes: return modes;
-    case StepSpec::Kind::Dynamic: return dynamic;
+    case StepSpec::Kind::Relax:
+      return relax;
+    case StepSpec::Kind::Static:
+      return statics;
+    case StepSpec::Kind::Modes:
+      return modes;
+    case StepSpec::Kind::Dynamic:
+      return dynamic;
   }
   return relax;
 }
@@ -267,10 +296,10 @@ void readStep(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   const std::vector<MapEntry> entries =
       item.IsMap() ? mapEntries(b.diag, item, path) : std::vector<MapEntry>{};
   const auto& kinds = stepKinds();
-  const auto found =
-      entries.size() != 1 ? kinds.end()
-                          : std::find_if(kinds.begin(), kinds.end(),
-                                         [&](const auto& k) { return k.first == entries[0].key; });
+  const auto found = entries.size() != 1
+                         ? kinds.end()
+                         : std::find_if(kinds.begin(), kinds.end(),
+                                        [&](const auto& k) { return k.first == entries[0].key; });
   if (found == kinds.end()) {
     const std::string got = !item.IsMap()         ? describeNode(item)
                             : entries.size() == 1 ? "'" + entries[0].key + "'"
@@ -286,10 +315,18 @@ void readStep(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   step.where = {b.diag.file(), lineOf(e.key_node)};
   Fields f(b.diag, e.value, childPath(path, e.key), keysOf(step.kind));
   switch (step.kind) {
-    case StepSpec::Kind::Relax: readRelax(b, f, step.relax); break;
-    case StepSpec::Kind::Static: readStatic(b, f, step.statics); break;
-    case StepSpec::Kind::Modes: readModes(b, f, step.modes); break;
-    case StepSpec::Kind::Dynamic: readDynamic(b, f, step); break;
+    case StepSpec::Kind::Relax:
+      readRelax(b, f, step.relax);
+      break;
+    case StepSpec::Kind::Static:
+      readStatic(b, f, step.statics);
+      break;
+    case StepSpec::Kind::Modes:
+      readModes(b, f, step.modes);
+      break;
+    case StepSpec::Kind::Dynamic:
+      readDynamic(b, f, step);
+      break;
   }
   step.name = stepName(b, f, found->first.c_str());
   b.c.steps.push_back(std::move(step));
@@ -300,8 +337,9 @@ void readStep(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
 void readSteps(CaseBuilder& b, const YAML::Node& n) {
   const std::vector<YAML::Node> items = listItems(b.diag, n, "steps");
   if (items.empty() && (n.IsNull() || n.IsSequence()))
-    b.diag.error(n, "steps: no steps (expected at least one relax:, static:, modes: or dynamic: "
-                    "step)");
+    b.diag.error(n,
+                 "steps: no steps (expected at least one relax:, static:, modes: or dynamic: "
+                 "step)");
   for (size_t i = 0; i < items.size(); ++i) readStep(b, items[i], itemPath("steps", i));
 }
 

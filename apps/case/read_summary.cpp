@@ -26,10 +26,14 @@ struct QuantityInfo {
 std::string unitOf(Measure m, UnitSystem system) {
   const UnitNames units = unitNames(system);
   switch (m) {
-    case Measure::Length: return units.length;
-    case Measure::Force: return units.force;
-    case Measure::ForcePerLength: return units.force + "/" + units.length;
-    case Measure::AngularFrequency: return "rad/s";
+    case Measure::Length:
+      return units.length;
+    case Measure::Force:
+      return units.force;
+    case Measure::ForcePerLength:
+      return units.force + "/" + units.length;
+    case Measure::AngularFrequency:
+      return "rad/s";
   }
   return "";
 }
@@ -140,10 +144,11 @@ bool checkReaction(CaseBuilder& b, const YAML::Node& n, const std::string& path,
 bool rejectUnused(CaseBuilder& b, Fields& f, const std::string& quantity, Target target) {
   bool ok = true;
   for (const std::string key : {"node", "element", "end", "mode"}) {
-    const bool used = key == "node"      ? target == Target::Node
-                      : key == "element" ? target == Target::ElementEnd || target == Target::Membrane
-                      : key == "end"     ? target == Target::ElementEnd
-                                         : target == Target::Mode;
+    const bool used = key == "node" ? target == Target::Node
+                      : key == "element"
+                          ? target == Target::ElementEnd || target == Target::Membrane
+                      : key == "end" ? target == Target::ElementEnd
+                                     : target == Target::Mode;
     if (f.find(key) && !used) {
       b.diag.error(*f.find(key), f.path(key) + ": not used by " + quantity);
       ok = false;
@@ -190,9 +195,10 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
     if (!mode || !step) return std::nullopt;
     const int index = *step < 0 ? static_cast<int>(b.c.steps.size()) - 1 : *step;
     if (index < 0 || b.c.steps[index].kind != StepSpec::Kind::Modes) {
-      b.diag.error(*q, f.path("quantity") + ": frequency of a step that is not a modes step (got " +
-                           (index < 0 ? std::string("no steps") : "step '" + b.c.steps[index].name + "'") +
-                           ", expected step: naming a modes step)");
+      b.diag.error(
+          *q, f.path("quantity") + ": frequency of a step that is not a modes step (got " +
+                  (index < 0 ? std::string("no steps") : "step '" + b.c.steps[index].name + "'") +
+                  ", expected step: naming a modes step)");
       return std::nullopt;
     }
     if (*mode > b.c.steps[index].modes.modes) {
@@ -206,9 +212,9 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   if (info.target == Target::ElementEnd) {
     const YAML::Node* el = f.require("element");
     const YAML::Node* end = f.require("end");
-    const auto element = el ? elementRef(b, *el, f.path("element"), {"cable", "spring"},
-                                         "a cable or spring")
-                            : std::nullopt;
+    const auto element =
+        el ? elementRef(b, *el, f.path("element"), {"cable", "spring"}, "a cable or spring")
+           : std::nullopt;
     const auto which =
         end ? b.in.choice<int>(*end, f.path("end"), {{"first", 0}, {"last", 1}}) : std::nullopt;
     if (!element || !which) return std::nullopt;

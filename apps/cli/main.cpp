@@ -9,7 +9,8 @@
 
 namespace {
 
-constexpr const char* kHelp = R"(flexmoor - nonlinear finite-element analysis of cables, mooring lines and membranes
+constexpr const char* kHelp =
+    R"(flexmoor - nonlinear finite-element analysis of cables, mooring lines and membranes
 
 Usage:
   flexmoor run CASE [-o DIR] [--no-vtk]   run a case; results go to DIR (default: results/)

@@ -15,9 +15,8 @@ std::optional<std::pair<double, double>> principalResultants(const element::Elem
   if (r.point_resultant.empty()) return std::nullopt;
   double larger = 0.0, smaller = 0.0;
   for (const Eigen::Matrix3d& n : r.point_resultant) {
-    Eigen::Vector3d values = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(
-                                 n, Eigen::EigenvaluesOnly)
-                                 .eigenvalues();
+    Eigen::Vector3d values =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(n, Eigen::EigenvaluesOnly).eigenvalues();
     std::sort(values.data(), values.data() + 3,
               [](double a, double b) { return std::abs(a) > std::abs(b); });
     larger += std::max(values(0), values(1));

@@ -159,8 +159,9 @@ void NetcdfWriter::definePoints(const ResultFrame& first) {
   const bool membranes = std::any_of(first.elements.begin(), first.elements.end(),
                                      [](const auto& r) { return !r.point_resultant.empty(); });
   if (membranes)
-    for (auto [id, name, which] : {std::tuple(&resultant_max_, "membrane_resultant_max", "larger"),
-                                   std::tuple(&resultant_min_, "membrane_resultant_min", "smaller")}) {
+    for (auto [id, name, which] :
+         {std::tuple(&resultant_max_, "membrane_resultant_max", "larger"),
+          std::tuple(&resultant_min_, "membrane_resultant_min", "smaller")}) {
       *id = file_.defineVariable(name, NC_DOUBLE, {dim_step_, dim_element_},
                                  std::string(which) +
                                      " in-plane principal stress resultant of the membrane "
@@ -270,15 +271,20 @@ void NetcdfWriter::gatherModes(std::vector<Slab>& slabs, const ResultFrame& fram
   if (frame.frequencies.empty()) return;
   if (dim_mode_ < 0) defineModes(frame.frequencies.size());
   if (frame.frequencies.size() != mode_count_)
-    throw std::runtime_error(path() + ": every modes step of a case must ask for the same number "
-                             "of modes (" + std::to_string(mode_count_) + ")");
+    throw std::runtime_error(path() +
+                             ": every modes step of a case must ask for the same number "
+                             "of modes (" +
+                             std::to_string(mode_count_) + ")");
   Slab f{angular_frequency_, {records_, 0}, {1, mode_count_}, frame.frequencies};
   for (size_t m = 0; m < mode_count_; ++m)
-    requireFinite(f.values[m], path(), [&] { return "angular_frequency[mode " + std::to_string(m) + "]"; });
+    requireFinite(f.values[m], path(),
+                  [&] { return "angular_frequency[mode " + std::to_string(m) + "]"; });
   slabs.push_back(std::move(f));
   const size_t nodes = node_count_;
   for (int k = 0; k < 3; ++k) {
-    Slab s{mode_shape_.id[k], {records_, 0, 0}, {1, mode_count_, nodes},
+    Slab s{mode_shape_.id[k],
+           {records_, 0, 0},
+           {1, mode_count_, nodes},
            std::vector<double>(mode_count_ * nodes)};
     for (size_t m = 0; m < mode_count_; ++m)
       for (size_t n = 0; n < nodes; ++n) {

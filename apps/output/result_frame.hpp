@@ -10,8 +10,8 @@
 namespace flexmoor::app {
 
 struct ResultFrame {
-  int step_index = 0;          // 0-based index of the analysis step in the case
-  std::string step_name;       // "relax", "static", ...
+  int step_index = 0;     // 0-based index of the analysis step in the case
+  std::string step_name;  // "relax", "static", ...
   const model::State* state = nullptr;
   std::vector<element::ElementResult> elements;
   model::NodalField reactions;  // 3 x nodes; zero at free dofs

@@ -1,13 +1,13 @@
 #include "apps/output/summary_quantities.hpp"
 
-#include "apps/output/membrane_resultants.hpp"
-
 #include <algorithm>
 #include <cmath>
-#include <utility>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "apps/output/membrane_resultants.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -47,11 +47,15 @@ double unscaled(const SummarySpec& spec, const model::Model& model, const Result
   using Q = SummarySpec::Quantity;
   const int n = spec.node, k = spec.component;
   switch (spec.quantity) {
-    case Q::Displacement: requireNodeComponent(spec, model); return frame.state->displacement(k, n);
+    case Q::Displacement:
+      requireNodeComponent(spec, model);
+      return frame.state->displacement(k, n);
     case Q::Position:
       requireNodeComponent(spec, model);
       return model.reference()(k, n) + frame.state->displacement(k, n);
-    case Q::Reaction: requireNodeComponent(spec, model); return frame.reactions(k, n);
+    case Q::Reaction:
+      requireNodeComponent(spec, model);
+      return frame.reactions(k, n);
     case Q::ReactionMagnitude:
       requireIndex(n, model.nodeCount(), spec, "node");
       return frame.reactions.col(n).norm();
@@ -59,12 +63,16 @@ double unscaled(const SummarySpec& spec, const model::Model& model, const Result
       requireIndex(spec.element, static_cast<int>(frame.elements.size()), spec, "element");
       requireIndex(spec.end, 2, spec, "end");
       return frame.elements[spec.element].end_tension[spec.end];
-    case Q::MaxTension: return maxTension(spec, frame);
+    case Q::MaxTension:
+      return maxTension(spec, frame);
     case Q::Frequency:
-      requireIndex(spec.mode - 1, static_cast<int>(frame.frequencies.size()), spec, "mode (0-based)");
+      requireIndex(spec.mode - 1, static_cast<int>(frame.frequencies.size()), spec,
+                   "mode (0-based)");
       return frame.frequencies[spec.mode - 1];
-    case Q::ResultantMax: return principalResultants(spec, frame).first;
-    case Q::ResultantMin: return principalResultants(spec, frame).second;
+    case Q::ResultantMax:
+      return principalResultants(spec, frame).first;
+    case Q::ResultantMin:
+      return principalResultants(spec, frame).second;
   }
   throw std::logic_error("summary \"" + spec.name + "\": unknown quantity");
 }

@@ -36,10 +36,14 @@ VtkCell vtkCell(const element::Element& e) {
   if (n.size() == 1) return {kVtkVertex, n};
   if (type.rfind("membrane", 0) != 0) return {kVtkPolyLine, n};
   switch (n.size()) {
-    case 3: return {kVtkTriangle, n};
-    case 4: return {kVtkQuad, n};
-    case 6: return {kVtkQuadraticTriangle, n};
-    case 8: return {kVtkQuadraticQuad, n};
+    case 3:
+      return {kVtkTriangle, n};
+    case 4:
+      return {kVtkQuad, n};
+    case 6:
+      return {kVtkQuadraticTriangle, n};
+    case 8:
+      return {kVtkQuadraticQuad, n};
     case 10:  // corners 0 1 2, edge nodes 3 4 | 5 6 | 7 8, centroid 9
       return {kVtkPolygon, {n[0], n[3], n[4], n[1], n[5], n[6], n[2], n[7], n[8]}};
     case 12:  // corners 0 1 2 3, edge nodes 4 5 | 6 7 | 8 9 | 10 11
@@ -105,8 +109,9 @@ void writeCellScalar(std::ostream& os, const std::string& path, const ResultFram
   os << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
   for (size_t e = 0; e < frame.elements.size(); ++e) {
     const double v = value(frame.elements[e]);
-    requireFinite(v, path,
-                  [&] { return std::string(name) + " of element " + std::to_string(e) + " (0-based)"; });
+    requireFinite(v, path, [&] {
+      return std::string(name) + " of element " + std::to_string(e) + " (0-based)";
+    });
     os << v << "\n";
   }
 }

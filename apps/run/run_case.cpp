@@ -37,8 +37,7 @@ model::NodalField reactions(const model::Model& m, const model::Assembler& a,
 class Runner {
  public:
   Runner(const Case& c, const RunOptions& o, RunOutcome& out, std::ostream& log)
-      : c_(c), o_(o), log_(log), assembler_(*c.model),
-        writer_(out.netcdf_path, *c.model, c) {
+      : c_(c), o_(o), log_(log), assembler_(*c.model), writer_(out.netcdf_path, *c.model, c) {
     slog_.message = [&log](const std::string& s) { log << "  " << s << std::endl; };
   }
 
@@ -51,8 +50,8 @@ class Runner {
       case StepSpec::Kind::Relax: {
         const solve::RelaxationReport r = solve::relax(assembler_, state, step.relax, slog_);
         log_ << "  relaxed in " << r.steps << " steps (" << r.iterations
-             << " Newton iterations), change " << r.change_ratio << ", residual "
-             << r.residual_norm << "\n";
+             << " Newton iterations), change " << r.change_ratio << ", residual " << r.residual_norm
+             << "\n";
         break;
       }
       case StepSpec::Kind::Static: {
@@ -63,8 +62,10 @@ class Runner {
              << r.increments.size() << " increments (" << iterations << " iterations)\n";
         break;
       }
-      case StepSpec::Kind::Modes: return modes(i, state);
-      case StepSpec::Kind::Dynamic: return dynamic(i, state);
+      case StepSpec::Kind::Modes:
+        return modes(i, state);
+      case StepSpec::Kind::Dynamic:
+        return dynamic(i, state);
     }
     return frame(i, step.name, state);
   }
@@ -85,7 +86,8 @@ class Runner {
 
   void vtk(const ResultFrame& f, int i) const {
     if (!o_.vtk) return;
-    const fs::path path = fs::path(o_.output_dir) / (c_.name + "-" + std::to_string(i + 1) + ".vtk");
+    const fs::path path =
+        fs::path(o_.output_dir) / (c_.name + "-" + std::to_string(i + 1) + ".vtk");
     writeVtk(path.string(), *c_.model, f);
   }
 
@@ -122,7 +124,8 @@ class Runner {
         next_report += 0.1 * duration;
       }
     };
-    const solve::DynamicReport r = solve::integrate(assembler_, state, step.dynamic, slog_, on_step);
+    const solve::DynamicReport r =
+        solve::integrate(assembler_, state, step.dynamic, slog_, on_step);
     log_ << "  " << r.steps << " time steps, " << r.iterations << " Newton iterations, "
          << r.tangent_updates << " tangent updates, " << r.cuts << " step cuts\n";
     streamed_ = true;
@@ -162,8 +165,8 @@ RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log) 
   const model::Model& m = *c.model;
   Runner runner(c, options, out, log);
   log << "flexmoor: case " << c.name << " (" << c.file << ")\n  " << m.nodeCount() << " nodes, "
-      << m.elementCount() << " elements, " << m.equationCount() << " equations, "
-      << c.steps.size() << " steps\n";
+      << m.elementCount() << " elements, " << m.equationCount() << " equations, " << c.steps.size()
+      << " steps\n";
 
   std::vector<model::State> states;  // the state closing each step; frames point into it
   states.reserve(c.steps.size());

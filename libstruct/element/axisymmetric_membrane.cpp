@@ -65,8 +65,9 @@ void AxisymmetricMembrane<N>::internalForce(const ElementContext& c, Eigen::Vect
     // Eq. 3.17 on the shell of revolution: T^11 L^I,1 y,1 + T^22 rho L^I e_r
     Eigen::Matrix<double, 2, 3 * N> B = Eigen::Matrix<double, 2, 3 * N>::Zero();
     for (int I = 0; I < N; ++I) {
-      f.template segment<3>(3 * I) += dV * (s.T(0, 0) * dL(I) * y1 + s.T(1, 1) * rho * Lv(I) * kRadial);
-      B.template block<1, 3>(0, 3 * I) = dL(I) * y1.transpose();       // d gamma_11
+      f.template segment<3>(3 * I) +=
+          dV * (s.T(0, 0) * dL(I) * y1 + s.T(1, 1) * rho * Lv(I) * kRadial);
+      B.template block<1, 3>(0, 3 * I) = dL(I) * y1.transpose();             // d gamma_11
       B.template block<1, 3>(1, 3 * I) = rho * Lv(I) * kRadial.transpose();  // d gamma_22
     }
     if (!K) continue;
@@ -91,7 +92,8 @@ void AxisymmetricMembrane<N>::mass(const ElementContext& c, MassKind kind,
   const auto& rule = shape::gaussLegendre(quadrature_points_);
   for (int q = 0; q < rule.size(); ++q) {
     const typename L::Vector Lv = L::values(rule.points[q]);
-    const double dA = (X * L::derivatives(rule.points[q])).norm() * X.row(0).dot(Lv) * rule.weights[q];
+    const double dA =
+        (X * L::derivatives(rule.points[q])).norm() * X.row(0).dot(Lv) * rule.weights[q];
     m += (section_.density * section_.thickness * dA) * (Lv * Lv.transpose());  // Eq. 4.40
   }
   nodalMass<N>(m, kind, M);
@@ -167,17 +169,25 @@ template class AxisymmetricMembrane<4>;
 std::unique_ptr<Element> makeAxisymmetricMembrane(std::vector<int> nodes, MembraneSection section,
                                                   int quadrature_points) {
   switch (nodes.size()) {
-    case 2: return std::make_unique<AxisymmetricMembrane<2>>(std::move(nodes), std::move(section), quadrature_points);
-    case 3: return std::make_unique<AxisymmetricMembrane<3>>(std::move(nodes), std::move(section), quadrature_points);
-    case 4: return std::make_unique<AxisymmetricMembrane<4>>(std::move(nodes), std::move(section), quadrature_points);
+    case 2:
+      return std::make_unique<AxisymmetricMembrane<2>>(std::move(nodes), std::move(section),
+                                                       quadrature_points);
+    case 3:
+      return std::make_unique<AxisymmetricMembrane<3>>(std::move(nodes), std::move(section),
+                                                       quadrature_points);
+    case 4:
+      return std::make_unique<AxisymmetricMembrane<4>>(std::move(nodes), std::move(section),
+                                                       quadrature_points);
   }
   throw std::invalid_argument("an axisymmetric membrane element has 2, 3 or 4 nodes (got " +
                               std::to_string(nodes.size()) + ")");
 }
 
-HoopCable::HoopCable(int node, CableSection section) : Element({node}), section_(std::move(section)) {}
+HoopCable::HoopCable(int node, CableSection section)
+    : Element({node}), section_(std::move(section)) {}
 
-void HoopCable::internalForce(const ElementContext& c, Eigen::VectorXd& f, Eigen::MatrixXd* K) const {
+void HoopCable::internalForce(const ElementContext& c, Eigen::VectorXd& f,
+                              Eigen::MatrixXd* K) const {
   const double r = c.reference(0, nodes()[0]);
   const double rho = r + c.state.displacement(0, nodes()[0]);
   const material::CableStress s = section_.material->stress(r * r, rho * rho);
@@ -189,7 +199,8 @@ void HoopCable::internalForce(const ElementContext& c, Eigen::VectorXd& f, Eigen
 }
 
 void HoopCable::mass(const ElementContext& c, MassKind, Eigen::MatrixXd& M) const {
-  M = section_.density * section_.area * c.reference(0, nodes()[0]) * Eigen::MatrixXd::Identity(3, 3);
+  M = section_.density * section_.area * c.reference(0, nodes()[0]) *
+      Eigen::MatrixXd::Identity(3, 3);
 }
 
 void HoopCable::bodyLoad(const ElementContext& c, const Vector3d& g, Eigen::VectorXd& p) const {

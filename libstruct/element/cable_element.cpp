@@ -132,8 +132,7 @@ void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
 template <int N>
 double CableElement<N>::axialForce(const Coordinates& X, const Coordinates& Y, double xi) const {
   const typename shape::Lagrange1D<N>::Vector dL = shape::Lagrange1D<N>::derivatives(xi);
-  return section_.material->tension((X * dL).squaredNorm(), (Y * dL).squaredNorm(),
-                                    section_.area);
+  return section_.material->tension((X * dL).squaredNorm(), (Y * dL).squaredNorm(), section_.area);
 }
 
 template <int N>
@@ -155,9 +154,15 @@ template class CableElement<4>;
 std::unique_ptr<Element> makeCableElement(std::vector<int> nodes, CableSection section,
                                           int quadrature_points) {
   switch (nodes.size()) {
-    case 2: return std::make_unique<CableElement<2>>(std::move(nodes), std::move(section), quadrature_points);
-    case 3: return std::make_unique<CableElement<3>>(std::move(nodes), std::move(section), quadrature_points);
-    case 4: return std::make_unique<CableElement<4>>(std::move(nodes), std::move(section), quadrature_points);
+    case 2:
+      return std::make_unique<CableElement<2>>(std::move(nodes), std::move(section),
+                                               quadrature_points);
+    case 3:
+      return std::make_unique<CableElement<3>>(std::move(nodes), std::move(section),
+                                               quadrature_points);
+    case 4:
+      return std::make_unique<CableElement<4>>(std::move(nodes), std::move(section),
+                                               quadrature_points);
     default:
       throw std::invalid_argument("a cable element has 2, 3 or 4 nodes (got " +
                                   std::to_string(nodes.size()) + ")");

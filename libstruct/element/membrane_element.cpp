@@ -49,8 +49,7 @@ std::string MembraneElement<Shape>::typeName() const {
 }
 
 template <class Shape>
-void MembraneElement<Shape>::gather(const ElementContext& c, Coordinates& X,
-                                    Coordinates& Y) const {
+void MembraneElement<Shape>::gather(const ElementContext& c, Coordinates& X, Coordinates& Y) const {
   for (int I = 0; I < N; ++I) {
     const int n = nodes()[I];
     X.col(I) = c.reference.col(n);
@@ -66,7 +65,8 @@ void MembraneElement<Shape>::internalForce(const ElementContext& c, Eigen::Vecto
   f.setZero(3 * N);
   if (K) K->setZero(3 * N, 3 * N);
   for (int q = 0; q < rule_.size(); ++q) {
-    const typename Shape::Derivatives dM = Shape::derivatives(rule_.points[q].x(), rule_.points[q].y());
+    const typename Shape::Derivatives dM =
+        Shape::derivatives(rule_.points[q].x(), rule_.points[q].y());
     const Eigen::Matrix<double, 3, 2> x = X * dM, y = Y * dM;  // x,a and y,a
     const Matrix2d a = x.transpose() * x, A = y.transpose() * y;
     const material::MembraneStress s = section_.material->stress(a, A);
@@ -83,7 +83,8 @@ void MembraneElement<Shape>::internalForce(const ElementContext& c, Eigen::Vecto
     K->noalias() += dV * (B.transpose() * CB);
     const Eigen::Matrix<double, N, N> G = dV * (dM * s.T * dM.transpose());
     for (int I = 0; I < N; ++I)
-      for (int J = 0; J < N; ++J) K->template block<3, 3>(3 * I, 3 * J).diagonal().array() += G(I, J);
+      for (int J = 0; J < N; ++J)
+        K->template block<3, 3>(3 * I, 3 * J).diagonal().array() += G(I, J);
   }
 }
 
@@ -151,7 +152,8 @@ ElementResult MembraneElement<Shape>::result(const ElementContext& c) const {
   gather(c, X, Y);
   ElementResult r;
   for (int q = 0; q < rule_.size(); ++q) {
-    const typename Shape::Derivatives dM = Shape::derivatives(rule_.points[q].x(), rule_.points[q].y());
+    const typename Shape::Derivatives dM =
+        Shape::derivatives(rule_.points[q].x(), rule_.points[q].y());
     const Eigen::Matrix<double, 3, 2> x = X * dM, y = Y * dM;
     const Matrix2d a = x.transpose() * x, A = y.transpose() * y;
     const material::MembraneStress s = section_.material->stress(a, A);
@@ -176,21 +178,35 @@ std::unique_ptr<Element> makeMembraneElement(const std::string& shape, std::vect
     const int order = quadrature > 0 ? quadrature : (n == 4 ? 2 : n == 8 ? 3 : 4);
     const auto& rule = shape::gaussLegendreQuad(order);
     switch (n) {
-      case 4: return std::make_unique<MembraneElement<shape::QuadShape<4>>>(std::move(nodes), std::move(section), rule);
-      case 8: return std::make_unique<MembraneElement<shape::QuadShape<8>>>(std::move(nodes), std::move(section), rule);
-      case 12: return std::make_unique<MembraneElement<shape::QuadShape<12>>>(std::move(nodes), std::move(section), rule);
+      case 4:
+        return std::make_unique<MembraneElement<shape::QuadShape<4>>>(std::move(nodes),
+                                                                      std::move(section), rule);
+      case 8:
+        return std::make_unique<MembraneElement<shape::QuadShape<8>>>(std::move(nodes),
+                                                                      std::move(section), rule);
+      case 12:
+        return std::make_unique<MembraneElement<shape::QuadShape<12>>>(std::move(nodes),
+                                                                       std::move(section), rule);
     }
   } else if (shape == "triangle") {
     const int degree = quadrature > 0 ? quadrature : (n == 3 ? 2 : n == 6 ? 4 : 6);
     const auto& rule = shape::triangleRule(degree);
     switch (n) {
-      case 3: return std::make_unique<MembraneElement<shape::TriangleShape<3>>>(std::move(nodes), std::move(section), rule);
-      case 6: return std::make_unique<MembraneElement<shape::TriangleShape<6>>>(std::move(nodes), std::move(section), rule);
-      case 10: return std::make_unique<MembraneElement<shape::TriangleShape<10>>>(std::move(nodes), std::move(section), rule);
+      case 3:
+        return std::make_unique<MembraneElement<shape::TriangleShape<3>>>(std::move(nodes),
+                                                                          std::move(section), rule);
+      case 6:
+        return std::make_unique<MembraneElement<shape::TriangleShape<6>>>(std::move(nodes),
+                                                                          std::move(section), rule);
+      case 10:
+        return std::make_unique<MembraneElement<shape::TriangleShape<10>>>(
+            std::move(nodes), std::move(section), rule);
     }
   }
-  throw std::invalid_argument("membrane elements are quads of 4, 8, 12 nodes or triangles of 3, 6, "
-                              "10 nodes (got " + shape + " with " + std::to_string(n) + ")");
+  throw std::invalid_argument(
+      "membrane elements are quads of 4, 8, 12 nodes or triangles of 3, 6, "
+      "10 nodes (got " +
+      shape + " with " + std::to_string(n) + ")");
 }
 
 }  // namespace flexmoor::element

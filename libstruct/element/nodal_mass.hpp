@@ -19,7 +19,8 @@ void nodalMass(const Eigen::Matrix<double, N, N>& m, MassKind kind, Eigen::Matri
   }
   M.setZero(3 * N, 3 * N);
   for (int I = 0; I < N; ++I)
-    for (int J = 0; J < N; ++J) M.template block<3, 3>(3 * I, 3 * J).diagonal().setConstant(used(I, J));
+    for (int J = 0; J < N; ++J)
+      M.template block<3, 3>(3 * I, 3 * J).diagonal().setConstant(used(I, J));
 }
 
 }  // namespace flexmoor::element

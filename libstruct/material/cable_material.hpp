@@ -22,7 +22,7 @@ struct CableStress {
 };
 
 struct PhysicalStress {
-  double S;        // second Piola-Kirchhoff stress, force per unit reference area
+  double S;  // second Piola-Kirchhoff stress, force per unit reference area
   double dSdStretch;
 };
 

@@ -14,7 +14,7 @@ struct LinePoint {
   Eigen::Vector3d tangent;       // unit tangent of the deformed axis
   double stretch = 1.0;          // current length / reference length
   double time = 0.0;
-  int element = -1;              // index of the element in the model
+  int element = -1;  // index of the element in the model
 };
 
 class LineLoad {

@@ -68,7 +68,8 @@ class Model {
  private:
   NodalField reference_ = NodalField(3, 0);
   std::vector<std::unique_ptr<element::Element>> elements_;
-  Eigen::Matrix<bool, 3, Eigen::Dynamic> constrained_ = Eigen::Matrix<bool, 3, Eigen::Dynamic>(3, 0);
+  Eigen::Matrix<bool, 3, Eigen::Dynamic> constrained_ =
+      Eigen::Matrix<bool, 3, Eigen::Dynamic>(3, 0);
   NodalField prescribed_ = NodalField(3, 0);
   std::vector<std::shared_ptr<const TimeFunction>> motion_;  // per dof, 3 * node + component
   Eigen::Matrix3Xi equation_ = Eigen::Matrix3Xi(3, 0);

@@ -7,7 +7,10 @@
 namespace flexmoor::model {
 
 SineFunction::SineFunction(double offset, double amplitude, double period, double phase)
-    : offset_(offset), amplitude_(amplitude), omega_(2.0 * std::acos(-1.0) / period), phase_(phase) {}
+    : offset_(offset),
+      amplitude_(amplitude),
+      omega_(2.0 * std::acos(-1.0) / period),
+      phase_(phase) {}
 
 double SineFunction::value(double t) const {
   return offset_ + amplitude_ * std::sin(omega_ * t + phase_);
@@ -33,8 +36,7 @@ TableFunction::TableFunction(std::vector<double> times, std::vector<double> valu
     : t_(std::move(times)), f_(std::move(values)) {
   if (t_.empty() || t_.size() != f_.size())
     throw std::invalid_argument("a table needs as many values as times, at least one");
-  if (!std::is_sorted(t_.begin(), t_.end()) ||
-      std::adjacent_find(t_.begin(), t_.end()) != t_.end())
+  if (!std::is_sorted(t_.begin(), t_.end()) || std::adjacent_find(t_.begin(), t_.end()) != t_.end())
     throw std::invalid_argument("table times must increase strictly");
 }
 int TableFunction::segment(double t) const {

@@ -16,7 +16,8 @@ using Eigen::VectorXd;
 class ArcLengthPath {
  public:
   ArcLengthPath(const model::Assembler& a, const StaticOptions& o)
-      : a_(a), o_(o),
+      : a_(a),
+        o_(o),
         linear_(o.pressure_load_stiffness ? MatrixKind::Unsymmetric : MatrixKind::Symmetric) {}
 
   // One increment of arc length ds from the converged `state`; false if it fails (state is then
@@ -108,7 +109,8 @@ void refuseDisplacementControl(const model::Model& m) {
       if (m.isConstrained(n, k) && m.prescribed(n, k) != 0.0 && !m.motion(n, k))
         throw std::invalid_argument(
             "arc-length control follows proportional loads; a prescribed support displacement "
-            "needs load control (node " + std::to_string(n + 1) + ")");
+            "needs load control (node " +
+            std::to_string(n + 1) + ")");
 }
 
 }  // namespace
@@ -129,7 +131,8 @@ StaticReport solveArcLength(const model::Assembler& assembler, model::State& sta
     VectorXd du;
     double dlambda = 0.0;
     int cuts = 0;
-    while (!path.increment(state, ds, sign, previous.size() ? &previous : nullptr, du, dlambda, rec)) {
+    while (
+        !path.increment(state, ds, sign, previous.size() ? &previous : nullptr, du, dlambda, rec)) {
       state = converged;
       ds *= 0.5;
       if (++cuts > options.arc.max_cuts) {
@@ -161,7 +164,8 @@ StaticReport solveArcLength(const model::Assembler& assembler, model::State& sta
     s << "increment " << inc << "  load factor " << state.load_factor << "  arc " << ds
       << "  iterations " << rec.iteration << "  |R|/|P| " << rec.residual_norm;
     log.say(s.str());
-    const double growth = std::sqrt(double(options.arc.desired_iterations) / std::max(1, rec.iteration));
+    const double growth =
+        std::sqrt(double(options.arc.desired_iterations) / std::max(1, rec.iteration));
     ds *= std::clamp(growth, 1.0 / options.arc.max_growth, options.arc.max_growth);
   }
   if (sign * (target - state.load_factor) > 1e-12 * std::max(1.0, std::abs(target))) {

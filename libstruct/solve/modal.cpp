@@ -1,8 +1,9 @@
 #include "libstruct/solve/modal.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <Spectra/MatOp/SparseSymMatProd.h>
 #include <Spectra/SymGEigsShiftSolver.h>
+
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numeric>

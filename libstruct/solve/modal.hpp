@@ -20,8 +20,8 @@ struct ModalOptions {
 };
 
 struct ModalResult {
-  std::vector<double> omega;                 // rad/s, ascending
-  std::vector<model::NodalField> shapes;     // mass-normalised mode shapes, 3 x nodes each
+  std::vector<double> omega;              // rad/s, ascending
+  std::vector<model::NodalField> shapes;  // mass-normalised mode shapes, 3 x nodes each
 };
 
 ModalResult naturalModes(const model::Assembler& assembler, const model::State& state,

@@ -62,12 +62,11 @@ class NewmarkStepper {
     assembler_.applyPrescribed(next);
     VectorXd u = u_n;  // predictor: the displacement of the last step
     model::SparseMatrix K;
-    const bool refresh_each_step = o_.flavour == NewtonFlavour::Full ||
-                                   o_.flavour == NewtonFlavour::SelfCorrective ||
-                                   steps_since_update_ + 1 >= std::max(1, o_.stiffness_update) ||
-                                   h != factor_h_;
+    const bool refresh_each_step =
+        o_.flavour == NewtonFlavour::Full || o_.flavour == NewtonFlavour::SelfCorrective ||
+        steps_since_update_ + 1 >= std::max(1, o_.stiffness_update) || h != factor_h_;
     for (int it = 0; it <= o_.max_iterations; ++it) {
-      const VectorXd acc = a0 * (u - u_n) - a1 * v_n - a2 * acc_n;         // Eq. 4.57
+      const VectorXd acc = a0 * (u - u_n) - a1 * v_n - a2 * acc_n;           // Eq. 4.57
       const VectorXd v = v_n + h * ((1.0 - gamma_) * acc_n + gamma_ * acc);  // Eq. 4.58
       setFree(model_, u, next.displacement);
       setFree(model_, v, next.velocity);
@@ -156,8 +155,8 @@ void advance(NewmarkStepper& stepper, model::State& state, double h, int depth,
   }
   if (depth >= o.max_step_cuts) {
     std::ostringstream s;
-    s << "time step at t = " << state.time << " s did not converge even with dt = " << h
-      << " s (" << rec.iteration << " iterations, displacement norm " << rec.displacement_norm
+    s << "time step at t = " << state.time << " s did not converge even with dt = " << h << " s ("
+      << rec.iteration << " iterations, displacement norm " << rec.displacement_norm
       << ", residual " << rec.residual_norm << ")";
     throw ConvergenceError(s.str(), rec);
   }

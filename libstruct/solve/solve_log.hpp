@@ -8,8 +8,8 @@
 namespace flexmoor::solve {
 
 struct IterationRecord {
-  int increment = 0;       // increment (static) or pseudo-time step (relaxation), from 1
-  int iteration = 0;       // Newton iteration within it, from 1
+  int increment = 0;  // increment (static) or pseudo-time step (relaxation), from 1
+  int iteration = 0;  // Newton iteration within it, from 1
   double load_factor = 0.0;
   double displacement_norm = 0.0;  // Eq. 5.1: sqrt(sum du^2 / sum u^2)
   double residual_norm = 0.0;      // |R| / max(|P|, |F|)
@@ -20,8 +20,12 @@ struct SolveLog {
   std::function<void(const IterationRecord&)> iteration;
   std::function<void(const std::string&)> message;
 
-  void report(const IterationRecord& r) const { if (iteration) iteration(r); }
-  void say(const std::string& s) const { if (message) message(s); }
+  void report(const IterationRecord& r) const {
+    if (iteration) iteration(r);
+  }
+  void say(const std::string& s) const {
+    if (message) message(s);
+  }
 };
 
 class ConvergenceError : public std::runtime_error {

@@ -32,7 +32,7 @@ struct ArcLengthOptions {
   int desired_iterations = 5;  // ds grows or shrinks by sqrt(desired / used) per increment
   double max_growth = 2.0;     // bound on that factor
   int max_increments = 2000;
-  int max_cuts = 10;           // a failed increment is retried with ds / 2
+  int max_cuts = 10;  // a failed increment is retried with ds / 2
 };
 
 enum class LoadControl { Load, ArcLength };
@@ -56,13 +56,13 @@ struct StaticOptions {
 // pseudo-time, C reduced after each step.
 struct RelaxationOptions {
   double load_factor = 1.0;
-  double tolerance = 1e-3;              // Eq. C.15 on the step's displacement change
-  double damping = 1.0e4;               // C, the damping matrix constant (Eq. C.11)
-  double initial_damping_factor = 0.01; // mu(0) of Eq. C.13: C(k+1) = mu(k) r(k) C(k)
-  double decrement = 1.0;               // gamma of Eq. C.14: mu(k+1) = gamma mu(k)
-  double residual_tolerance = 1e-8;     // equilibrium check: |R| < tol * max(|P|, |F|)
+  double tolerance = 1e-3;               // Eq. C.15 on the step's displacement change
+  double damping = 1.0e4;                // C, the damping matrix constant (Eq. C.11)
+  double initial_damping_factor = 0.01;  // mu(0) of Eq. C.13: C(k+1) = mu(k) r(k) C(k)
+  double decrement = 1.0;                // gamma of Eq. C.14: mu(k+1) = gamma mu(k)
+  double residual_tolerance = 1e-8;      // equilibrium check: |R| < tol * max(|P|, |F|)
   int max_steps = 500;
-  int max_iterations = 30;              // Newton iterations inside one pseudo-time step
+  int max_iterations = 30;  // Newton iterations inside one pseudo-time step
 };
 
 }  // namespace flexmoor::solve
@@ -93,9 +93,9 @@ struct DynamicOptions {
   int max_iterations = 30;
   Convergence convergence;
   element::MassKind mass = element::MassKind::Consistent;
-  double rayleigh_mass = 0.0;       // C = rayleigh_mass M + rayleigh_stiffness K_T(start of step)
+  double rayleigh_mass = 0.0;  // C = rayleigh_mass M + rayleigh_stiffness K_T(start of step)
   double rayleigh_stiffness = 0.0;
-  int max_step_cuts = 6;            // a failed step is halved, at most this many times
+  int max_step_cuts = 6;  // a failed step is halved, at most this many times
 };
 
 }  // namespace flexmoor::solve

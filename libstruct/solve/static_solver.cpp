@@ -37,10 +37,11 @@ bool factorizeRegularised(LinearSolver& linear, model::SparseMatrix& K, const So
 
 StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
                          const StaticOptions& options, const SolveLog& log) {
-  if (options.control == LoadControl::ArcLength) return solveArcLength(assembler, state, options, log);
+  if (options.control == LoadControl::ArcLength)
+    return solveArcLength(assembler, state, options, log);
   StaticReport report;
   LinearSolver linear(options.pressure_load_stiffness ? MatrixKind::Unsymmetric
-                                                     : MatrixKind::Symmetric);
+                                                      : MatrixKind::Symmetric);
   model::SparseMatrix K;
   BfgsUpdates bfgs;
   double floor = 0.0;  // round-off floor of the residual at the last tangent
@@ -59,7 +60,8 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
       const Residual R = outOfBalance(assembler, state, update ? &K : nullptr);
       rec.residual_norm = R.relative();
       if (update) floor = R.floor;
-      if (options.flavour == NewtonFlavour::Bfgs && it > 0) bfgs.add(du, previous_residual - R.free);
+      if (options.flavour == NewtonFlavour::Bfgs && it > 0)
+        bfgs.add(du, previous_residual - R.free);
       if (it > 0) log.report(rec);
       const bool self_corrective = options.flavour == NewtonFlavour::SelfCorrective;
       if (it > 0 && (self_corrective || converged(options.convergence, rec.displacement_norm,
@@ -88,12 +90,12 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
       state = converged_state;
       throw ConvergenceError(failure(options, rec, "did not converge"), rec);
     }
-    report.increments.push_back({inc, state.load_factor, rec.iteration, updates,
-                                 rec.displacement_norm, rec.residual_norm});
+    report.increments.push_back(
+        {inc, state.load_factor, rec.iteration, updates, rec.displacement_norm, rec.residual_norm});
     std::ostringstream s;
-    s << "increment " << inc << "/" << options.increments << "  load factor "
-      << state.load_factor << "  iterations " << rec.iteration << "  |du|/|u| "
-      << rec.displacement_norm << "  |R|/|P| " << rec.residual_norm;
+    s << "increment " << inc << "/" << options.increments << "  load factor " << state.load_factor
+      << "  iterations " << rec.iteration << "  |du|/|u| " << rec.displacement_norm << "  |R|/|P| "
+      << rec.residual_norm;
     log.say(s.str());
   }
   return report;

@@ -26,7 +26,6 @@ struct StaticReport {
 // Solves in place. On failure throws ConvergenceError and leaves `state` at the last converged
 // increment.
 StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
-                         const StaticOptions& options,
-                         const SolveLog& log = {});
+                         const StaticOptions& options, const SolveLog& log = {});
 
 }  // namespace flexmoor::solve

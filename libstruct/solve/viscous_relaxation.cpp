@@ -20,8 +20,8 @@ bool relaxationStep(const model::Assembler& assembler, model::State& state,
     Residual R = outOfBalance(assembler, state, &K);
     const Eigen::VectorXd velocity =
         assembler.restrictToFree(asVector(state.displacement) - asVector(previous));
-    R.free -= C * velocity;                         // D u' with D = C I (Eq. C.11)
-    K.diagonal().array() += C;                      // Eq. C.10
+    R.free -= C * velocity;     // D u' with D = C I (Eq. C.11)
+    K.diagonal().array() += C;  // Eq. C.10
     if (!linear.factorize(K)) return false;
     const Eigen::VectorXd du = linear.solve(R.free);
     if (!du.allFinite()) return false;
@@ -76,14 +76,14 @@ RelaxationReport relax(const model::Assembler& assembler, model::State& state,
     s << "relax step " << step << "  C " << C << "  change " << ratio << "  |R|/|P| " << residual;
     log.say(s.str());
     if (ratio < o.tolerance && residual < o.residual_tolerance) return report;
-    C *= mu * ratio;  // Eq. C.12-C.13
+    C *= mu * ratio;    // Eq. C.12-C.13
     mu *= o.decrement;  // Eq. C.14
   }
   IterationRecord rec{report.steps, 0, state.load_factor, report.change_ratio,
                       report.residual_norm};
-  throw ConvergenceError("viscous relaxation did not reach equilibrium in " +
-                             std::to_string(o.max_steps) + " steps",
-                         rec);
+  throw ConvergenceError(
+      "viscous relaxation did not reach equilibrium in " + std::to_string(o.max_steps) + " steps",
+      rec);
 }
 
 }  // namespace flexmoor::solve

@@ -9,15 +9,14 @@
 namespace flexmoor::solve {
 
 struct RelaxationReport {
-  int steps = 0;              // pseudo-time steps taken (the dissertation's "increments")
-  int iterations = 0;         // Newton iterations over all steps
-  double final_damping = 0.0; // C at the end
-  double change_ratio = 0.0;  // Eq. C.15 at the last step
+  int steps = 0;               // pseudo-time steps taken (the dissertation's "increments")
+  int iterations = 0;          // Newton iterations over all steps
+  double final_damping = 0.0;  // C at the end
+  double change_ratio = 0.0;   // Eq. C.15 at the last step
   double residual_norm = 0.0;
 };
 
 RelaxationReport relax(const model::Assembler& assembler, model::State& state,
-                       const RelaxationOptions& options,
-                       const SolveLog& log = {});
+                       const RelaxationOptions& options, const SolveLog& log = {});
 
 }  // namespace flexmoor::solve

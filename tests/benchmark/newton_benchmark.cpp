@@ -66,7 +66,8 @@ struct MembraneSheet {
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const int a = j * side + i;
-        model.addElement(element::makeMembraneElement("quad", {a, a + 1, a + side + 1, a + side}, section));
+        model.addElement(
+            element::makeMembraneElement("quad", {a, a + 1, a + side + 1, a + side}, section));
       }
     state = model.initialState();
     for (int k = 0; k < model.nodeCount(); ++k) {
@@ -156,20 +157,27 @@ void newmarkSteps(benchmark::State& bench, Structure& structure, double dt) {
   }
   bench.counters["dofs"] = assembler.equationCount();
   bench.counters["iterations_per_step"] = static_cast<double>(iterations) / kSteps;
-  bench.counters["steps"] = benchmark::Counter(kSteps, benchmark::Counter::kIsIterationInvariantRate);
+  bench.counters["steps"] =
+      benchmark::Counter(kSteps, benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void TimeStepCableChain(benchmark::State& bench) {
   CableChain chain(static_cast<int>(bench.range(0)) / 3, 2);
   newmarkSteps(bench, chain, 1e-3);
 }
-BENCHMARK(TimeStepCableChain)->RangeMultiplier(10)->Range(100, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(TimeStepCableChain)
+    ->RangeMultiplier(10)
+    ->Range(100, 100000)
+    ->Unit(benchmark::kMillisecond);
 
 void TimeStepMembraneSheet(benchmark::State& bench) {
   MembraneSheet sheet(static_cast<int>(std::sqrt(bench.range(0) / 3.0)));
   newmarkSteps(bench, sheet, 1e-3);
 }
-BENCHMARK(TimeStepMembraneSheet)->RangeMultiplier(10)->Range(100, 100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(TimeStepMembraneSheet)
+    ->RangeMultiplier(10)
+    ->Range(100, 100000)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -62,7 +62,8 @@ TEST(Cli, EveryShippedCaseIsListedAndValid) {
   const CliRun list = flexmoor("cases");
   EXPECT_EQ(list.exit_code, 0);
   int count = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(fs::path(FLEXMOOR_SOURCE_DIR) / "cases")) {
+  for (const auto& entry :
+       fs::recursive_directory_iterator(fs::path(FLEXMOOR_SOURCE_DIR) / "cases")) {
     if (entry.path().extension() != ".yaml") continue;
     ++count;
     const std::string name = entry.path().stem().string();
@@ -84,16 +85,17 @@ TEST(Cli, CheckValidatesWithoutRunning) {
 TEST(Cli, BadCaseIsRefusedWithEveryProblemAndItsLine) {
   const fs::path dir = scratch("bad");
   const fs::path file = dir / "bad.yaml";
-  std::ofstream(file) << "name: bad\n"
-                         "units: US\n"
-                         "materials:\n"
-                         "  cable: {type: linear_elastic, E: -1000 psf}\n"
-                         "sections:\n"
-                         "  cable: {material: cable, area: 0.1 ft, density: 1}\n"
-                         "lines:\n"
-                         "  - {from: [0, 0, 0], to: [10, 0, 0], elements: 2, order: 7, section: cable}\n"
-                         "steps:\n"
-                         "  - static: {increments: 0}\n";
+  std::ofstream(file)
+      << "name: bad\n"
+         "units: US\n"
+         "materials:\n"
+         "  cable: {type: linear_elastic, E: -1000 psf}\n"
+         "sections:\n"
+         "  cable: {material: cable, area: 0.1 ft, density: 1}\n"
+         "lines:\n"
+         "  - {from: [0, 0, 0], to: [10, 0, 0], elements: 2, order: 7, section: cable}\n"
+         "steps:\n"
+         "  - static: {increments: 0}\n";
   const CliRun r = flexmoor("run " + file.string() + " -o " + dir.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("bad.yaml:4:"), std::string::npos) << r.output;   // E < 0
@@ -106,7 +108,8 @@ TEST(Cli, BadCaseIsRefusedWithEveryProblemAndItsLine) {
 TEST(Cli, NonConvergenceExitsWith3AndKeepsTheLastConvergedState) {
   const fs::path dir = scratch("diverge");
   const fs::path file = dir / "diverge.yaml";
-  std::string text = readFile(fs::path(FLEXMOOR_SOURCE_DIR) / "cases/seed/ex1-suspended-cable-8xL2.yaml");
+  std::string text =
+      readFile(fs::path(FLEXMOOR_SOURCE_DIR) / "cases/seed/ex1-suspended-cable-8xL2.yaml");
   // One relaxation step cannot reach equilibrium.
   text = std::regex_replace(text, std::regex("damping: 10000\\}"), "damping: 10000, max_steps: 1}");
   text = std::regex_replace(text, std::regex("name: ex1-suspended-cable-8xL2"), "name: diverge");

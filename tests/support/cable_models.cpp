@@ -31,8 +31,8 @@ std::vector<int> addStraightCable(model::Model& model, int first, int last, int 
   nodes.push_back(last);
   for (int e = 0; e < elements; ++e) {
     const auto begin = nodes.begin() + e * (nodes_per_element - 1);
-    model.addElement(element::makeCableElement(
-        std::vector<int>(begin, begin + nodes_per_element), section, quadrature_points));
+    model.addElement(element::makeCableElement(std::vector<int>(begin, begin + nodes_per_element),
+                                               section, quadrature_points));
   }
   return nodes;
 }
@@ -57,8 +57,7 @@ SuspendedCable makeSuspendedCable(const SuspendedCableInputs& in, int elements,
   const int right = m.addNode(Eigen::Vector3d(in.unstretched_length, 0.0, 0.0));
   cable.nodes = addStraightCable(
       m, left, right, elements, nodes_per_element,
-      linearElasticSection(in.youngs_modulus, in.area, in.density, compression),
-      quadrature_points);
+      linearElasticSection(in.youngs_modulus, in.area, in.density, compression), quadrature_points);
   for (int n : cable.nodes) m.constrain(n, 1);  // planar: every y dof fixed
   m.constrain(left, 0);
   m.constrain(left, 2);

@@ -41,8 +41,7 @@ struct SuspendedCableInputs {
 
   // The same cable for the analytic elastic catenary: w = rho A g, EA = E A.
   CatenaryInputs catenary() const {
-    return {unstretched_length, density * area * gravity, youngs_modulus * area,
-            horizontal_force};
+    return {unstretched_length, density * area * gravity, youngs_modulus * area, horizontal_force};
   }
 };
 
@@ -66,15 +65,14 @@ SuspendedCable makeSuspendedCable(const SuspendedCableInputs& inputs, int elemen
 solve::RelaxationOptions exampleOneRelaxation();
 
 struct SagAndMovement {
-  double centre_sag = 0.0;        // -z displacement of the centre node
-  double support_movement = 0.0;  // -x displacement of the roller end
+  double centre_sag = 0.0;           // -z displacement of the centre node
+  double support_movement = 0.0;     // -x displacement of the roller end
   double least_point_tension = 0.0;  // the smallest axial force at any Gauss point
   solve::RelaxationReport report;
 };
 
 // Relaxes the cable from its straight start to the hanging equilibrium.
-SagAndMovement relaxSuspendedCable(const SuspendedCable& cable,
-                                   const solve::RelaxationOptions& options =
-                                       exampleOneRelaxation());
+SagAndMovement relaxSuspendedCable(
+    const SuspendedCable& cable, const solve::RelaxationOptions& options = exampleOneRelaxation());
 
 }  // namespace flexmoor::test

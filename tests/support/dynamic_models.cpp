@@ -89,15 +89,14 @@ Eigen::Matrix3d amplificationMatrix(const SchemeConstants& p, double omega_dt, d
     s(j) = 1.0;
     const double x = s(0), v = s(1), a = s(2);
     const double a1 = (-(1.0 + al) * (W2 * (x + v + (0.5 - b) * a) + c * (v + (1.0 - g) * a)) +
-                       al * (W2 * x + c * v)) / D;
+                       al * (W2 * x + c * v)) /
+                      D;
     A.col(j) << x + v + (0.5 - b) * a + b * a1, v + (1.0 - g) * a + g * a1, a1;
   }
   return A;
 }
 
-double spectralRadius(const Eigen::Matrix3d& A) {
-  return A.eigenvalues().cwiseAbs().maxCoeff();
-}
+double spectralRadius(const Eigen::Matrix3d& A) { return A.eigenvalues().cwiseAbs().maxCoeff(); }
 
 double trapezoidalPeriodRatio(double omega_dt) {
   return 0.5 * omega_dt / std::atan(0.5 * omega_dt);
@@ -202,12 +201,12 @@ SaggingCable makeSaggingCable(const SaggingCableInputs& in) {
                                                     R * (std::cos(phi) - std::cos(theta)))));
   }
   // The end nodes sit exactly on the supports.
-  const element::CableSection section = linearElasticSection(
-      in.youngs_modulus, in.area, in.density, material::Compression::Carry);
+  const element::CableSection section =
+      linearElasticSection(in.youngs_modulus, in.area, in.density, material::Compression::Carry);
   for (int e = 0; e < in.elements; ++e) {
     const auto begin = cable.nodes.begin() + e * (in.nodes_per_element - 1);
-    m.addElement(element::makeCableElement(
-        std::vector<int>(begin, begin + in.nodes_per_element), section));
+    m.addElement(
+        element::makeCableElement(std::vector<int>(begin, begin + in.nodes_per_element), section));
   }
   pin(m, cable.nodes.front());
   pin(m, cable.nodes.back());
@@ -236,8 +235,10 @@ struct Rule {
 
 Rule gaussRule(int n) {
   switch (n) {
-    case 2: return {{-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)}, {1.0, 1.0}};
-    case 3: return {{-std::sqrt(0.6), 0.0, std::sqrt(0.6)}, {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0}};
+    case 2:
+      return {{-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)}, {1.0, 1.0}};
+    case 3:
+      return {{-std::sqrt(0.6), 0.0, std::sqrt(0.6)}, {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0}};
     case 4: {
       const double a = std::sqrt(3.0 / 7.0 - 2.0 / 7.0 * std::sqrt(1.2));
       const double b = std::sqrt(3.0 / 7.0 + 2.0 / 7.0 * std::sqrt(1.2));
@@ -309,10 +310,10 @@ std::unique_ptr<model::Model> makeFreeTruss(int nx, int ny, int nz) {
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
         const bool xi = i + 1 < nx, yj = j + 1 < ny, zk = k + 1 < nz;
-        if (xi) add(id(i, j, k), id(i + 1, j, k));                    // edges
+        if (xi) add(id(i, j, k), id(i + 1, j, k));  // edges
         if (yj) add(id(i, j, k), id(i, j + 1, k));
         if (zk) add(id(i, j, k), id(i, j, k + 1));
-        if (xi && yj) add(id(i, j, k), id(i + 1, j + 1, k));          // face diagonals
+        if (xi && yj) add(id(i, j, k), id(i + 1, j + 1, k));  // face diagonals
         if (yj && zk) add(id(i, j, k), id(i, j + 1, k + 1));
         if (xi && zk) add(id(i, j, k), id(i + 1, j, k + 1));
         if (xi && yj && zk) add(id(i, j, k), id(i + 1, j + 1, k + 1));  // body diagonal
@@ -334,10 +335,14 @@ using Element = SquareMembraneInputs::Element;
 
 int nodeIntervals(Element e) {  // node intervals per cell edge
   switch (e) {
-    case Element::Quad4: return 1;
-    case Element::Quad8: return 2;
-    case Element::Quad12: return 3;
-    case Element::Triangle6: return 2;
+    case Element::Quad4:
+      return 1;
+    case Element::Quad8:
+      return 2;
+    case Element::Quad12:
+      return 3;
+    case Element::Triangle6:
+      return 2;
   }
   return 1;
 }
@@ -405,12 +410,12 @@ SquareMembrane makeSquareMembrane(const SquareMembraneInputs& in) {
         std::vector<int> nodes;
         for (int k = 0; k < 6; ++k) {
           const Eigen::Vector2d rs = shape::TriangleShape<6>::node(k);  // in {0, 1/2, 1}
-          const int i = t[0].first + static_cast<int>(std::lround(
-                                         rs.x() * (t[1].first - t[0].first) +
-                                         rs.y() * (t[2].first - t[0].first)));
-          const int j = t[0].second + static_cast<int>(std::lround(
-                                          rs.x() * (t[1].second - t[0].second) +
-                                          rs.y() * (t[2].second - t[0].second)));
+          const int i =
+              t[0].first + static_cast<int>(std::lround(rs.x() * (t[1].first - t[0].first) +
+                                                        rs.y() * (t[2].first - t[0].first)));
+          const int j =
+              t[0].second + static_cast<int>(std::lround(rs.x() * (t[1].second - t[0].second) +
+                                                         rs.y() * (t[2].second - t[0].second)));
           nodes.push_back(node(i, j));
         }
         m.addElement(element::makeMembraneElement("triangle", nodes, section));

@@ -92,9 +92,9 @@ struct TautCableInputs {
   RightEnd right_end = RightEnd::PrescribedStretch;
 
   double secondPiola() const { return 0.5 * youngs_modulus * (stretch * stretch - 1.0); }
-  double tension() const { return secondPiola() * stretch * area; }           // N = S lambda A0
-  double stretchedLength() const { return stretch * length; }                 // L
-  double massPerLength() const { return density * area / stretch; }           // m, per current length
+  double tension() const { return secondPiola() * stretch * area; }  // N = S lambda A0
+  double stretchedLength() const { return stretch * length; }        // L
+  double massPerLength() const { return density * area / stretch; }  // m, per current length
   // Incremental axial stiffness per unit reference volume, d(N / A0) / d lambda = E lambda^2 + S.
   double axialModulus() const { return youngs_modulus * stretch * stretch + secondPiola(); }
 };

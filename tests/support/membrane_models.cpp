@@ -27,7 +27,8 @@ void pressuriseAll(model::Model& m) {
 
 }  // namespace
 
-std::unique_ptr<model::Model> quarterTube(const TubeInputs& t, int elements, int nodes_per_element) {
+std::unique_ptr<model::Model> quarterTube(const TubeInputs& t, int elements,
+                                          int nodes_per_element) {
   auto m = std::make_unique<model::Model>();
   const int p = nodes_per_element == 4 ? 1 : 2;  // node intervals per element edge
   const int around = elements * p + 1, along = p + 1;
@@ -37,8 +38,8 @@ std::unique_ptr<model::Model> quarterTube(const TubeInputs& t, int elements, int
     for (int j = 0; j < along; ++j) {
       if (p == 2 && i % 2 == 1 && j == 1) continue;  // serendipity: no centre node
       const double theta = 0.5 * pi * i / (around - 1);
-      id[i][j] = m->addNode({t.radius * std::cos(theta), t.radius * std::sin(theta),
-                             t.length * j / (along - 1)});
+      id[i][j] = m->addNode(
+          {t.radius * std::cos(theta), t.radius * std::sin(theta), t.length * j / (along - 1)});
     }
   for (int e = 0; e < elements; ++e) {
     const int i = e * p;

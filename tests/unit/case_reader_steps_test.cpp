@@ -31,11 +31,15 @@ supports:
   - {node: cable.end, fix: [x, y, z], displacement: [0.01, 0, 0]}
   - {nodes: cable, fix: [y]}
 steps:
-)" + steps + (summary.empty() ? "" : "summary:\n" + summary);
+)" + steps +
+         (summary.empty() ? "" : "summary:\n" + summary);
 }
 
 TEST(CaseReaderSteps, StaticArcLengthAndNewtonOptions) {
-  const Case c = readCase(writeCase("arc.yaml", cableCase(R"(  - static: {name: up, load_factor: 2, increments: 4, control: arc_length, psi: 0.5,
+  const Case c = readCase(writeCase(
+      "arc.yaml",
+      cableCase(
+          R"(  - static: {name: up, load_factor: 2, increments: 4, control: arc_length, psi: 0.5,
                desired_iterations: 6, max_increments: 300, newton: full, max_iterations: 40,
                tolerance: 1e-7, criterion: both, pressure_stiffness: true}
 )")));
@@ -56,14 +60,15 @@ TEST(CaseReaderSteps, StaticArcLengthAndNewtonOptions) {
 }
 
 TEST(CaseReaderSteps, ModesAndDynamicOptions) {
-  const Case c = readCase(writeCase("dynamic.yaml", cableCase(R"(  - static: {name: pretension}
+  const Case c = readCase(
+      writeCase("dynamic.yaml", cableCase(R"(  - static: {name: pretension}
   - modes: {name: about, count: 6, shift: 2 Hz, mass: lumped}
   - dynamic: {schedule: [{dt: 0.02 s, steps: 50}, {dt: 0.05 s, steps: 10}], hht_alpha: -0.1,
               newton: modified, stiffness_update: 3, rayleigh: {mass: 0.1, stiffness: 0.001 s},
               max_step_cuts: 4, output_every: 5}
   - dynamic: {dt: 0.01, steps: 7, gamma: 0.6, beta: 0.3025}
 )",
-                                                              R"(  omega_2: {quantity: frequency, mode: 2, step: about}
+                                          R"(  omega_2: {quantity: frequency, mode: 2, step: about}
 )")));
   ASSERT_EQ(c.steps.size(), 4u);
   const solve::ModalOptions& m = c.steps[1].modes;
@@ -95,7 +100,8 @@ TEST(CaseReaderSteps, ModesAndDynamicOptions) {
 }
 
 TEST(CaseReaderSteps, StepMistakesAreReportedWithTheirLines) {
-  const std::vector<std::string> m = problems(writeCase("bad-steps.yaml", cableCase(R"(  - static: {psi: 0.5}
+  const std::vector<std::string> m = problems(
+      writeCase("bad-steps.yaml", cableCase(R"(  - static: {psi: 0.5}
   - modes: {count: 3}
   - dynamic: {dt: 0.1, steps: 10, schedule: [{dt: 0.1, steps: 2}]}
   - dynamic: {dt: 0.1, steps: 10, gamma: 0.4, hht_alpha: -0.5}
@@ -105,36 +111,44 @@ TEST(CaseReaderSteps, StepMistakesAreReportedWithTheirLines) {
   - vibrate: {}
   - static: {control: arc_length, newton: self_corrective}
 )",
-                                                                      R"(  too_high: {quantity: frequency, mode: 4, step: 2}
+                                            R"(  too_high: {quantity: frequency, mode: 4, step: 2}
   not_modes: {quantity: frequency, mode: 1}
   tension: {quantity: resultant_max, element: 1}
 )")));
-  EXPECT_TRUE(anyContains(m, "bad-steps.yaml:13: steps[1].static.psi: only used with control: "
-                             "arc_length (got no control: key)"))
+  EXPECT_TRUE(anyContains(m,
+                          "bad-steps.yaml:13: steps[1].static.psi: only used with control: "
+                          "arc_length (got no control: key)"))
       << joined(m);
   EXPECT_TRUE(anyContains(m, "bad-steps.yaml:15: steps[3].dynamic.schedule: given with dt/steps"))
       << joined(m);
-  EXPECT_TRUE(anyContains(m, "bad-steps.yaml:16: steps[4].dynamic.gamma: out of range (got 0.4, "
-                             "expected 0.5 to 1)"))
+  EXPECT_TRUE(anyContains(m,
+                          "bad-steps.yaml:16: steps[4].dynamic.gamma: out of range (got 0.4, "
+                          "expected 0.5 to 1)"))
       << joined(m);
-  EXPECT_TRUE(anyContains(m, "steps[4].dynamic.hht_alpha: out of range (got -0.5, expected -1/3 to 0)"))
+  EXPECT_TRUE(
+      anyContains(m, "steps[4].dynamic.hht_alpha: out of range (got -0.5, expected -1/3 to 0)"))
       << joined(m);
   EXPECT_TRUE(anyContains(m, "bad-steps.yaml:17: steps[5].dynamic.hht_alpha: given with beta"))
       << joined(m);
-  EXPECT_TRUE(anyContains(m, "steps[5].dynamic.newton: unknown value (got 'bfgs', expected one "
-                             "of: full, modified, self_corrective)"))
+  EXPECT_TRUE(anyContains(m,
+                          "steps[5].dynamic.newton: unknown value (got 'bfgs', expected one "
+                          "of: full, modified, self_corrective)"))
       << joined(m);
   EXPECT_TRUE(anyContains(m, "bad-steps.yaml:18: steps[6].dynamic: missing key 'schedule'"))
       << joined(m);
-  EXPECT_TRUE(anyContains(m, "bad-steps.yaml:20: steps[8]: not a step (got 'vibrate'")) << joined(m);
-  EXPECT_TRUE(anyContains(m, "bad-steps.yaml:21: steps[9].static.newton: arc length iterates with "
-                             "full Newton (got self_corrective"))
+  EXPECT_TRUE(anyContains(m, "bad-steps.yaml:20: steps[8]: not a step (got 'vibrate'"))
       << joined(m);
-  EXPECT_TRUE(anyContains(m, "summary.too_high.mode: beyond the modes computed (got 4, expected 1 "
-                             "to 3"))
+  EXPECT_TRUE(anyContains(m,
+                          "bad-steps.yaml:21: steps[9].static.newton: arc length iterates with "
+                          "full Newton (got self_corrective"))
       << joined(m);
-  EXPECT_TRUE(anyContains(m, "summary.not_modes.quantity: frequency of a step that is not a "
-                             "modes step"))
+  EXPECT_TRUE(anyContains(m,
+                          "summary.too_high.mode: beyond the modes computed (got 4, expected 1 "
+                          "to 3"))
+      << joined(m);
+  EXPECT_TRUE(anyContains(m,
+                          "summary.not_modes.quantity: frequency of a step that is not a "
+                          "modes step"))
       << joined(m);
   EXPECT_TRUE(anyContains(m, "summary.tension.element: element 1 is a cable (expected a membrane)"))
       << joined(m);

@@ -30,13 +30,14 @@ sections:
   skin: {material: rubber, thickness: 0.001, density: 1100}
   film: {material: plastic, thickness: 0.0002}
   wire: {material: steel, area: 1.0e-5, density: 7850}
-)" + body + "steps:\n" + steps;
+)" + body +
+         "steps:\n" + steps;
 }
 
 int countType(const model::Model& m, const std::string& prefix) {
-  return static_cast<int>(std::count_if(m.elements().begin(), m.elements().end(), [&](const auto& e) {
-    return e->typeName().rfind(prefix, 0) == 0;
-  }));
+  return static_cast<int>(
+      std::count_if(m.elements().begin(), m.elements().end(),
+                    [&](const auto& e) { return e->typeName().rfind(prefix, 0) == 0; }));
 }
 
 TEST(CaseReaderSurfaces, RectangleOfQ8HasSerendipityNodeCount) {
@@ -66,7 +67,8 @@ supports:
   };
   // The node at the centre of the square is a corner of all 8 triangles with `centre`
   // (Example 7's symmetric pattern), of 6 with diagonals all one way.
-  for (const auto& [pattern, expected] : {std::pair<std::string, int>{"centre", 8}, {"forward", 6}}) {
+  for (const auto& [pattern, expected] :
+       {std::pair<std::string, int>{"centre", 8}, {"forward", 6}}) {
     const Case c = read(pattern);
     ASSERT_EQ(c.model->elementCount(), 8) << pattern;
     EXPECT_EQ(c.model->nodeCount(), 25) << pattern;
@@ -251,7 +253,8 @@ loads:
 }
 
 TEST(CaseReaderSurfaces, MembraneMistakesAreReportedWithTheirLines) {
-  const std::vector<std::string> m = problems(writeCase("bad-membrane.yaml", membraneCase(R"(surfaces:
+  const std::vector<std::string> m =
+      problems(writeCase("bad-membrane.yaml", membraneCase(R"(surfaces:
   - {name: plate, shape: disc, centre: [0, 0, 0], radius: 1, divisions: [2, 4], element: Q8, section: skin}
   - {name: sheet, shape: rectangle, corner: [0, 0, 0], side1: [1, 0, 0], side2: [2, 0, 0],
      divisions: [1, 1], element: Q4, diagonals: centre, section: wire}
@@ -274,16 +277,18 @@ loads:
   EXPECT_TRUE(anyContains(m, "bad-membrane.yaml:12: surfaces[2]: side1 and side2 are parallel"))
       << joined(m);
   EXPECT_TRUE(anyContains(m, "surfaces[2].diagonals: only for triangles")) << joined(m);
-  EXPECT_TRUE(anyContains(m, "surfaces[2].section: wrong kind of section (got 'wire', a cable "
-                             "section with area, expected a membrane section with thickness)"))
+  EXPECT_TRUE(anyContains(m,
+                          "surfaces[2].section: wrong kind of section (got 'wire', a cable "
+                          "section with area, expected a membrane section with thickness)"))
       << joined(m);
   EXPECT_TRUE(anyContains(m, "lines[1].section: wrong kind of section (got 'skin'")) << joined(m);
   EXPECT_TRUE(anyContains(m, "elements[1].nodes: no membrane has 5 nodes")) << joined(m);
   EXPECT_TRUE(anyContains(m, "elements[2].node: a hoop needs a radius")) << joined(m);
   EXPECT_TRUE(anyContains(m, "histories.bumpy.times: not increasing")) << joined(m);
   EXPECT_TRUE(anyContains(m, "loads.pressure[1].on: unknown surface (got 'lid'")) << joined(m);
-  EXPECT_TRUE(anyContains(m, "loads.pressure[2].history: unknown history (got 'calm', expected "
-                             "one of: bumpy)"))
+  EXPECT_TRUE(anyContains(m,
+                          "loads.pressure[2].history: unknown history (got 'calm', expected "
+                          "one of: bumpy)"))
       << joined(m);
 }
 
@@ -296,8 +301,9 @@ sections:
 steps:
   - static: {}
 )"));
-  EXPECT_TRUE(anyContains(m, "no-nu.yaml:5: sections.plate.material: not a membrane material "
-                             "(got 'steel', linear_elastic without nu"))
+  EXPECT_TRUE(anyContains(m,
+                          "no-nu.yaml:5: sections.plate.material: not a membrane material "
+                          "(got 'steel', linear_elastic without nu"))
       << joined(m);
 }
 

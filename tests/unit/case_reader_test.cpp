@@ -209,9 +209,10 @@ summary:
       << joined(m);
   EXPECT_TRUE(anyContains(m, "bad.yaml:12: steps[1].static.increments: out of range (got 0"))
       << joined(m);
-  EXPECT_TRUE(anyContains(m,
-                          "bad.yaml:12: steps[1].static.newton: unknown value (got 'ful', "
-                          "expected one of: full, modified, bfgs, self_corrective; did you mean 'full'?)"))
+  EXPECT_TRUE(
+      anyContains(m,
+                  "bad.yaml:12: steps[1].static.newton: unknown value (got 'ful', "
+                  "expected one of: full, modified, bfgs, self_corrective; did you mean 'full'?)"))
       << joined(m);
 }
 
@@ -282,8 +283,7 @@ TEST(CaseReader, UnconnectedFreeNodeIsRefused) {
   text.replace(text.find("{nodes: all, fix: [y]}"), 22, "{nodes: cable, fix: [y]}");
   const std::vector<std::string> m = problems(writeCase("loose.yaml", text));
   ASSERT_EQ(m.size(), 1u) << joined(m);
-  EXPECT_NE(m[0].find("loose.yaml:28: node 100: no element holds it"), std::string::npos)
-      << m[0];
+  EXPECT_NE(m[0].find("loose.yaml:28: node 100: no element holds it"), std::string::npos) << m[0];
 }
 
 TEST(CaseReader, YamlSyntaxErrorIsReportedWithItsLine) {

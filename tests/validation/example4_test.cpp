@@ -34,7 +34,6 @@
 //     checks that halving the radial size (16 -> 32) reduces the error.
 // Qualitative: the pole height increases with the pressure.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <array>
@@ -198,8 +197,8 @@ std::string quarterDiscCase(int radial, int around) {
   }
   s << "summary:\n";
   for (const char* name : {"p0_3", "p0_6", "p0_9", "p1_2", "p1_5"})
-    s << "  pole_height_" << name << ": {quantity: displacement_z, node: {at: [0, 0, 0]}, step: "
-      << name << "}\n";
+    s << "  pole_height_" << name
+      << ": {quantity: displacement_z, node: {at: [0, 0, 0]}, step: " << name << "}\n";
   return s.str();
 }
 

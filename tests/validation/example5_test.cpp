@@ -64,19 +64,26 @@ std::string meridianCase(int elements) {
          "  ring: {material: cord, area: 0.012272 ft^2}\n"
          "  half_ring: {material: cord, area: 0.006136 ft^2}\n"
          "surfaces:\n"
-         "  - {name: tube, shape: meridian, from: [10 ft, 0, 0], to: [10 ft, 0, 15 ft], elements: " +
-         n + ", order: 3, section: skin,\n"
-             "     cables: [{at: [0, " + half + "], section: ring}, {at: " + n +
+         "  - {name: tube, shape: meridian, from: [10 ft, 0, 0], to: [10 ft, 0, 15 ft], "
+         "elements: " +
+         n +
+         ", order: 3, section: skin,\n"
+         "     cables: [{at: [0, " +
+         half + "], section: ring}, {at: " + n +
          ", section: half_ring}]}\n"
          "supports:\n  - {nodes: tube, fix: [z]}\n"
          "loads:\n  pressure:\n    - {on: tube, pressure: 1 psf}\n"
          "steps:\n  - static: {name: inflate, load_factor: 4, increments: 2, newton: full, "
          "tolerance: 0.0025, pressure_stiffness: true}\n"
          "summary:\n"
-         "  radial_displacement_at_cable: {quantity: displacement_x, node: {at: [10 ft, 0, 15 ft]}}\n"
-         "  radial_displacement_between_cables: {quantity: displacement_x, node: {at: [10 ft, 0, 11.25 ft]}}\n"
-         "  radial_displacement_cable_2: {quantity: displacement_x, node: {at: [10 ft, 0, 7.5 ft]}}\n"
-         "  radial_displacement_end_bay: {quantity: displacement_x, node: {at: [10 ft, 0, 3.75 ft]}}\n"
+         "  radial_displacement_at_cable: {quantity: displacement_x, node: {at: [10 ft, 0, 15 "
+         "ft]}}\n"
+         "  radial_displacement_between_cables: {quantity: displacement_x, node: {at: [10 ft, 0, "
+         "11.25 ft]}}\n"
+         "  radial_displacement_cable_2: {quantity: displacement_x, node: {at: [10 ft, 0, 7.5 "
+         "ft]}}\n"
+         "  radial_displacement_end_bay: {quantity: displacement_x, node: {at: [10 ft, 0, 3.75 "
+         "ft]}}\n"
          "  radial_displacement_end_cable: {quantity: displacement_x, node: {at: [10 ft, 0, 0]}}\n";
 }
 
@@ -111,7 +118,8 @@ TEST_P(Example5, NamedCaseAgreesWithTheAxisymmetricModel) {
     const double fe = summaryValue(json, key), ref = summaryValue(reference, key);
     std::cout << "[ " << c.case_name << " ] " << key << " " << fe << " ft, meridian " << ref
               << " ft (" << 100.0 * relative(fe, ref) << " %)\n";
-    ::testing::Test::RecordProperty(key + "_error_percent", std::to_string(100.0 * relative(fe, ref)));
+    ::testing::Test::RecordProperty(key + "_error_percent",
+                                    std::to_string(100.0 * relative(fe, ref)));
     EXPECT_LT(std::abs(relative(fe, ref)), c.tolerance) << key;
   }
 }
@@ -141,11 +149,11 @@ TEST_P(Example5, CablesRestrainTheTubeAndItsEnds) {
   EXPECT_LT(between, 0.5 * unreinforced) << "unreinforced tube: " << unreinforced << " ft";
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Reinforced, Example5,
-    ::testing::Values(ReinforcedCase{"ex5-cable-reinforced-tube", 0.025},
-                      ReinforcedCase{"ex5-cable-reinforced-tube-refined", 0.002}),
-    flexmoor::test::CaseParamName{});
+INSTANTIATE_TEST_SUITE_P(Reinforced, Example5,
+                         ::testing::Values(ReinforcedCase{"ex5-cable-reinforced-tube", 0.025},
+                                           ReinforcedCase{"ex5-cable-reinforced-tube-refined",
+                                                          0.002}),
+                         flexmoor::test::CaseParamName{});
 
 // The reference itself: 16 and 64 meridian elements agree within 2e-5.
 TEST(Example5Meridian, ReferenceIsConverged) {

@@ -54,11 +54,11 @@ void expectTable1(const PublishedModel& published, material::Compression compres
   const double movement_error =
       (fe.support_movement - published.support_movement) / published.support_movement;
   std::cout << "[ Table 1, " << published.name
-            << (compression == material::Compression::Carry ? "" : ", tension only")
-            << " ] sag " << fe.centre_sag << " ft (published " << published.centre_sag << ", "
-            << 100.0 * sag_error << " %), movement " << fe.support_movement
-            << " ft (published " << published.support_movement << ", "
-            << 100.0 * movement_error << " %), " << fe.report.steps << " relaxation steps\n";
+            << (compression == material::Compression::Carry ? "" : ", tension only") << " ] sag "
+            << fe.centre_sag << " ft (published " << published.centre_sag << ", "
+            << 100.0 * sag_error << " %), movement " << fe.support_movement << " ft (published "
+            << published.support_movement << ", " << 100.0 * movement_error << " %), "
+            << fe.report.steps << " relaxation steps\n";
   ::testing::Test::RecordProperty("centre_sag_error_percent", std::to_string(100.0 * sag_error));
   ::testing::Test::RecordProperty("support_movement_error_percent",
                                   std::to_string(100.0 * movement_error));
@@ -77,9 +77,7 @@ TEST(Table1, FourQuadraticElements) {
 }
 
 // Table 1, 2 cubic elements: 57.84 / 46.89 ft, within 1.5%.
-TEST(Table1, TwoCubicElements) {
-  expectTable1(kTwoCubic, material::Compression::Carry, 0.015);
-}
+TEST(Table1, TwoCubicElements) { expectTable1(kTwoCubic, material::Compression::Carry, 0.015); }
 
 // With a tension-only law the slack interior Gauss points of the 4 x L3 model soften it; the
 // answer must still lie within 2.5% of Table 1. The compression-carrying model must really have

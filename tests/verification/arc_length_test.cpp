@@ -68,8 +68,8 @@ TEST(ArcLength, FollowsTheSnapThroughOfAShallowTrussToTheInvertedBranch) {
   const solve::StaticReport report = solve::solveStatic(assembler, state, o);
 
   // On the inverted branch: P(w) = 1.5 P_limit with w beyond 2 h.
-  const double w_exact = test::findRoot([&](double w) { return apexLoad(w) - 1.5 * p_limit; },
-                                        2.0 * kH, 10.0 * kH);
+  const double w_exact =
+      test::findRoot([&](double w) { return apexLoad(w) - 1.5 * p_limit; }, 2.0 * kH, 10.0 * kH);
   const double w = -state.displacement(2, apex);
   EXPECT_NEAR(w, w_exact, 1e-8 * kH);
   EXPECT_NEAR(state.displacement(0, apex), 0.0, 1e-10);

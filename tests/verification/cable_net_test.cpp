@@ -46,12 +46,12 @@ namespace flexmoor::test {
 namespace {
 
 struct NetInputs {
-  double b = 10.0;        // ft, interior nodes at (+-b, +-b)
-  double c = 25.0;        // ft, supports at +-c along each cable
-  double E = 3.6e6;       // ksf
-  double area = 0.01;     // ft^2
-  double pull = 0.05;     // delta, ft: support displacement outwards along the cable
-  double load = 13.608;   // P, kip at every interior node
+  double b = 10.0;       // ft, interior nodes at (+-b, +-b)
+  double c = 25.0;       // ft, supports at +-c along each cable
+  double E = 3.6e6;      // ksf
+  double area = 0.01;    // ft^2
+  double pull = 0.05;    // delta, ft: support displacement outwards along the cable
+  double load = 13.608;  // P, kip at every interior node
   double EA() const { return E * area; }
 };
 
@@ -105,10 +105,9 @@ Net buildNet(const NetInputs& n, int per_segment, Procedure procedure) {
   const element::CableSection section =
       linearElasticSection(n.E, n.area, 0.0, material::Compression::Carry);
   const std::shared_ptr<const model::TimeFunction> held =
-      procedure == Procedure::Ramped
-          ? nullptr
-          : std::make_shared<model::TableFunction>(std::vector<double>{0.0},
-                                                   std::vector<double>{1.0});
+      procedure == Procedure::Ramped ? nullptr
+                                     : std::make_shared<model::TableFunction>(
+                                           std::vector<double>{0.0}, std::vector<double>{1.0});
   // One cable: along axis `along` (0 = x, 1 = y) at the other coordinate `at`, through the two
   // interior nodes `first` (at -b) and `second` (at +b).
   const auto cable = [&](int along, double at, int first, int second) {
@@ -227,8 +226,8 @@ TEST(CableNet, FourIncrementsOfNewtonMatchSymmetricSolution) {
   std::cout << "[ net ] w " << -state.displacement(2, net.interior[0]) << " ft (exact "
             << exact.deflection << "), d " << state.displacement(0, net.interior[0])
             << " ft (exact " << exact.spread << "), T_o " << exact.outer_tension << " kip, T_i "
-            << exact.inner_tension << " kip\n[ net ] full Newton iterations per increment: "
-            << run.iterations << "\n";
+            << exact.inner_tension
+            << " kip\n[ net ] full Newton iterations per increment: " << run.iterations << "\n";
   for (const auto& c : run.corrections) {
     std::cout << "    |du|/|u|:";
     for (double x : c) std::cout << ' ' << x;
@@ -314,8 +313,9 @@ TEST(StaticSolver, PushedRopeIsAMechanism) {
   model::Model m;
   const int anchor = m.addNode(Eigen::Vector3d::Zero());
   const int end = m.addNode(Eigen::Vector3d(10.0, 0.0, 0.0));
-  const std::vector<int> nodes = addStraightCable(
-      m, anchor, end, 4, 2, linearElasticSection(1.0e6, 0.1, 0.0, material::Compression::TensionOnly));
+  const std::vector<int> nodes =
+      addStraightCable(m, anchor, end, 4, 2,
+                       linearElasticSection(1.0e6, 0.1, 0.0, material::Compression::TensionOnly));
   pin(m, anchor);
   for (int n : nodes) {
     m.constrain(n, 1);
@@ -325,7 +325,8 @@ TEST(StaticSolver, PushedRopeIsAMechanism) {
   m.numberEquations();
   const model::Assembler assembler(m);
   model::State state = m.initialState();
-  EXPECT_THROW(solve::solveStatic(assembler, state, solve::StaticOptions{}), solve::ConvergenceError);
+  EXPECT_THROW(solve::solveStatic(assembler, state, solve::StaticOptions{}),
+               solve::ConvergenceError);
   EXPECT_EQ(state.load_factor, 0.0);
   EXPECT_TRUE(state.displacement.isZero(0.0));
 }

@@ -36,12 +36,10 @@ TEST(ElasticCatenary, IrvineClosedFormMatchesQuadrature) {
   for (const double EA : {200.0, 1.0e5}) {
     const CatenaryInputs in = exampleOneWithStiffness(EA);
     const CatenaryShape closed = irvineCatenary(in);
-    const CatenaryShape quad =
-        integrateCatenary(in, [EA](double T) { return 1.0 + T / EA; });
+    const CatenaryShape quad = integrateCatenary(in, [EA](double T) { return 1.0 + T / EA; });
     EXPECT_LT(relativeError(quad.span, closed.span), 1e-10) << "EA " << EA;
     EXPECT_LT(relativeError(quad.centre_sag, closed.centre_sag), 1e-10) << "EA " << EA;
-    EXPECT_LT(relativeError(quad.support_movement, closed.support_movement), 1e-10)
-        << "EA " << EA;
+    EXPECT_LT(relativeError(quad.support_movement, closed.support_movement), 1e-10) << "EA " << EA;
   }
 }
 
@@ -79,7 +77,8 @@ TEST(ElasticCatenary, GreenStrainLawDiffersFromIrvineAtSecondOrder) {
   const double t_max = std::hypot(H, V) / EA;
   const CatenaryShape a = irvineCatenary(soft);
   const CatenaryShape b = greenStrainCatenary(soft);
-  const double dspan = -1.5 * H / (w * EA * EA) * (V * std::hypot(H, V) + H * H * std::asinh(V / H));
+  const double dspan =
+      -1.5 * H / (w * EA * EA) * (V * std::hypot(H, V) + H * H * std::asinh(V / H));
   const double dsag = -0.5 / (w * EA * EA) * (std::pow(std::hypot(H, V), 3) - H * H * H);
   std::cout << "[ law b - law a, EA 1000 ] span " << b.span - a.span << " (2nd order " << dspan
             << "), sag " << b.centre_sag - a.centre_sag << " (2nd order " << dsag << ")\n";
@@ -170,8 +169,8 @@ TEST(Catenary, ErrorFallsAtTheOrderOfTheElement) {
   const SuspendedCableInputs inputs;
   const CatenaryShape exact = greenStrainCatenary(inputs.catenary());
   const auto errors = [&](int elements, int nodes_per_element) {
-    const SagAndMovement fe = relaxSuspendedCable(makeSuspendedCable(
-        inputs, elements, nodes_per_element, material::Compression::Carry));
+    const SagAndMovement fe = relaxSuspendedCable(
+        makeSuspendedCable(inputs, elements, nodes_per_element, material::Compression::Carry));
     return std::pair<double, double>{relativeError(fe.centre_sag, exact.centre_sag),
                                      relativeError(fe.support_movement, exact.support_movement)};
   };

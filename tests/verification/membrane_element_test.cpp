@@ -1,6 +1,8 @@
 // Membrane elements (Eq. 3.17, 4.28-4.41): tangents and pressure load stiffness against central
 // finite differences, patch tests, rigid rotation, and the inflated tube of Example 3 against
 // Green & Adkins' exact solution.
+#include "libstruct/element/membrane_element.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -9,7 +11,6 @@
 #include <random>
 
 #include "libstruct/element/axisymmetric_membrane.hpp"
-#include "libstruct/element/membrane_element.hpp"
 #include "libstruct/model/assembler.hpp"
 #include "libstruct/shape/quad_shape.hpp"
 #include "libstruct/shape/triangle_shape.hpp"
@@ -83,7 +84,8 @@ class MembraneShapes : public ::testing::TestWithParam<ShapeCase> {
     std::uniform_real_distribution<double> noise(-0.05, 0.05);
     for (int i = 0; i < c.nodes; ++i) {
       const Vector2d p = naturalNode(c, i);
-      X_.col(i) << 2.0 * p.x() + 0.1 * p.y(), 1.5 * p.y(), 0.3 * p.x() * p.x() + 0.1 * p.y() * p.y();
+      X_.col(i) << 2.0 * p.x() + 0.1 * p.y(), 1.5 * p.y(),
+          0.3 * p.x() * p.x() + 0.1 * p.y() * p.y();
       state_.displacement.col(i) << 0.3 * X_(0, i) + noise(rng), 0.2 * X_(1, i) + noise(rng),
           0.1 * X_(0, i) + noise(rng);
     }
@@ -98,9 +100,8 @@ TEST_P(MembraneShapes, TangentMatchesFiniteDifference) {
   for (auto law : {mooneyRivlin(), linearElastic()}) {
     build(law);
     EXPECT_LT(finiteDifferenceError(X_, state_,
-                                    [&](const element::ElementContext& c, VectorXd& f, MatrixXd* K) {
-                                      element_->internalForce(c, f, K);
-                                    }),
+                                    [&](const element::ElementContext& c, VectorXd& f,
+                                        MatrixXd* K) { element_->internalForce(c, f, K); }),
               1e-6)
         << law->name();
   }
@@ -155,8 +156,8 @@ TEST_P(MembraneShapes, UniformStretchIsReproducedExactly) {
   std::vector<int> nodes(c.nodes);
   for (int i = 0; i < c.nodes; ++i) nodes[i] = i;
   const double E = 1.0e4, nu = 0.3, h0 = 0.01;
-  auto e = element::makeMembraneElement(c.shape, nodes,
-                                        {h0, 1.0, std::make_shared<material::LinearElasticPlaneStress>(E, nu)});
+  auto e = element::makeMembraneElement(
+      c.shape, nodes, {h0, 1.0, std::make_shared<material::LinearElasticPlaneStress>(E, nu)});
   // An affine map of the reference cell keeps edges straight and mid-side nodes in place.
   Eigen::Matrix2d J;
   J << 1.3, 0.4, -0.2, 0.9;
@@ -210,12 +211,14 @@ TEST(AxisymmetricMembrane, TangentAndPressureStiffnessMatchFiniteDifference) {
       X.col(i) << 2.0 + t + 0.2 * t * t, 0.0, 3.0 * t;
       s.displacement.col(i) << 0.5 + noise(rng), 0.0, noise(rng);
     }
-    EXPECT_LT(finiteDifferenceError(X, s, [&](const element::ElementContext& c, VectorXd& f,
-                                              MatrixXd* K) { e->internalForce(c, f, K); }),
+    EXPECT_LT(finiteDifferenceError(X, s,
+                                    [&](const element::ElementContext& c, VectorXd& f,
+                                        MatrixXd* K) { e->internalForce(c, f, K); }),
               1e-6)
         << n;
-    EXPECT_LT(finiteDifferenceError(X, s, [&](const element::ElementContext& c, VectorXd& f,
-                                              MatrixXd* K) { e->pressureLoad(c, 3.0, f, K); }),
+    EXPECT_LT(finiteDifferenceError(X, s,
+                                    [&](const element::ElementContext& c, VectorXd& f,
+                                        MatrixXd* K) { e->pressureLoad(c, 3.0, f, K); }),
               1e-6)
         << n;
   }
@@ -229,8 +232,8 @@ TEST(HoopCable, RadialStiffnessMatchesFiniteDifference) {
   X << 10.0, 0.0, 1.0;
   model::State s(1);
   s.displacement(0, 0) = 3.0;
-  const double error = finiteDifferenceError(
-      X, s, [&](const element::ElementContext& c, VectorXd& f, MatrixXd* K) {
+  const double error =
+      finiteDifferenceError(X, s, [&](const element::ElementContext& c, VectorXd& f, MatrixXd* K) {
         ring.internalForce(c, f, K);
       });
   EXPECT_LT(error, 1e-6);
@@ -269,9 +272,12 @@ TEST_P(Example3, RadialDisplacementMatchesGreenAdkins) {
 INSTANTIATE_TEST_SUITE_P(
     Models, Example3,
     ::testing::Values(
-        TubeModel{"TwoQ8", [](const test::TubeInputs& t) { return test::quarterTube(t, 2, 8); }, 0.01},
-        TubeModel{"Axisymmetric", [](const test::TubeInputs& t) { return test::axisymmetricTube(t, 2, 3); }, 0.01},
-        TubeModel{"SixteenQ4", [](const test::TubeInputs& t) { return test::quarterTube(t, 16, 4); }, 0.02}),
+        TubeModel{"TwoQ8", [](const test::TubeInputs& t) { return test::quarterTube(t, 2, 8); },
+                  0.01},
+        TubeModel{"Axisymmetric",
+                  [](const test::TubeInputs& t) { return test::axisymmetricTube(t, 2, 3); }, 0.01},
+        TubeModel{"SixteenQ4",
+                  [](const test::TubeInputs& t) { return test::quarterTube(t, 16, 4); }, 0.02}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -9,6 +9,8 @@
 //   omega_k^2 = (6 c / (rho0 h0^2)) (1 - cos(k pi / n)) / (2 + cos(k pi / n)),  k = 1 .. n - 1,
 // with c = S (transverse) or c = E lambda^2 + S (axial); for the transverse ones this is
 // 6 T / (m h^2) (...) in the stretched tension T, mass per stretched length m and stretched h.
+#include "libstruct/solve/modal.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,14 +21,13 @@
 
 #include "libstruct/model/assembler.hpp"
 #include "libstruct/solve/equilibrium.hpp"
-#include "libstruct/solve/modal.hpp"
 #include "tests/support/dynamic_models.hpp"
 
 namespace flexmoor::test {
 namespace {
 
 solve::ModalResult allModes(const model::Assembler& assembler, const model::State& state,
-                             element::MassKind mass = element::MassKind::Consistent) {
+                            element::MassKind mass = element::MassKind::Consistent) {
   solve::ModalOptions o;
   o.modes = assembler.equationCount();
   o.mass = mass;
@@ -35,13 +36,13 @@ solve::ModalResult allModes(const model::Assembler& assembler, const model::Stat
 
 // Largest relative deviation of the frequencies of `modes` (indices into r) from the closed form
 // of the string, mode k = 1, 2, ... in the order given, each k repeated `multiplicity` times.
-double closedFormError(const solve::ModalResult& r, const std::vector<int>& modes,
-                       int multiplicity, int elements, double modulus, const TautCableInputs& in) {
+double closedFormError(const solve::ModalResult& r, const std::vector<int>& modes, int multiplicity,
+                       int elements, double modulus, const TautCableInputs& in) {
   double worst = 0.0;
   for (size_t i = 0; i < modes.size(); ++i) {
     const int k = static_cast<int>(i) / multiplicity + 1;
-    const double exact = linearStringFrequency(elements, k, modulus * in.area,
-                                               in.density * in.area, in.length);
+    const double exact =
+        linearStringFrequency(elements, k, modulus * in.area, in.density * in.area, in.length);
     worst = std::max(worst, std::abs(r.omega[modes[i]] / exact - 1.0));
   }
   return worst;
@@ -59,8 +60,8 @@ TEST(Modal, TautStringMatchesConsistentMassClosedForm) {
   const model::Assembler assembler(*cable.model);
   const model::State state = pretension(cable, assembler);
   for (int n : cable.nodes)
-    EXPECT_NEAR(state.displacement(0, n),
-                (in.stretch - 1.0) * cable.model->reference()(0, n), 1e-12 * in.length);
+    EXPECT_NEAR(state.displacement(0, n), (in.stretch - 1.0) * cable.model->reference()(0, n),
+                1e-12 * in.length);
 
   const solve::ModalResult r = allModes(assembler, state);
   const std::vector<int> transverse = modesAlong(r, {2});
@@ -71,12 +72,12 @@ TEST(Modal, TautStringMatchesConsistentMassClosedForm) {
       closedFormError(r, transverse, 1, in.elements, in.secondPiola(), in);
   const double axial_error = closedFormError(r, axial, 1, in.elements, in.axialModulus(), in);
   // The same closed form written in the stretched quantities T, m, L.
-  const double first = linearStringFrequency(in.elements, 1, in.tension(), in.massPerLength(),
-                                             in.stretchedLength());
-  std::cout << std::setprecision(12) << "[ Modal, taut string 12 x L2 ] omega_1 = "
-            << r.omega[transverse[0]] << " (closed form " << first
-            << "); largest rel. error: transverse " << transverse_error << ", axial "
-            << axial_error << "\n";
+  const double first =
+      linearStringFrequency(in.elements, 1, in.tension(), in.massPerLength(), in.stretchedLength());
+  std::cout << std::setprecision(12)
+            << "[ Modal, taut string 12 x L2 ] omega_1 = " << r.omega[transverse[0]]
+            << " (closed form " << first << "); largest rel. error: transverse " << transverse_error
+            << ", axial " << axial_error << "\n";
   EXPECT_NEAR(r.omega[transverse[0]] / first, 1.0, 1e-8);
   EXPECT_LT(transverse_error, 1e-8);
   EXPECT_LT(axial_error, 1e-8);
@@ -132,8 +133,8 @@ TEST(Modal, ModeShapesAreMassOrthonormal) {
   Eigen::MatrixXd stiffness_error = Phi.transpose() * K * Phi;
   for (int i = 0; i < 20; ++i) stiffness_error(i, i) -= r.omega[i] * r.omega[i];
   const double omega_max = r.omega.back();
-  std::cout << "[ Modal, orthonormality ] max |Phi^T M Phi - I| = " << mass_error.cwiseAbs().maxCoeff()
-            << ", max |Phi^T K Phi - Omega^2| / omega_max^2 = "
+  std::cout << "[ Modal, orthonormality ] max |Phi^T M Phi - I| = "
+            << mass_error.cwiseAbs().maxCoeff() << ", max |Phi^T K Phi - Omega^2| / omega_max^2 = "
             << stiffness_error.cwiseAbs().maxCoeff() / (omega_max * omega_max) << "\n";
   EXPECT_LT(mass_error.cwiseAbs().maxCoeff(), 1e-8);
   EXPECT_LT(stiffness_error.cwiseAbs().maxCoeff(), 1e-8 * omega_max * omega_max);
@@ -162,8 +163,10 @@ TEST(Modal, SparsePathMatchesDensePathAndClosedForm) {
   double sparse_vs_dense = 0.0;
   for (int i = 0; i < 10; ++i)
     sparse_vs_dense = std::max(sparse_vs_dense, std::abs(sparse.omega[i] / dense.omega[i] - 1.0));
-  const double sparse_error = closedFormError(sparse, first_ten, 2, in.elements, in.secondPiola(), in);
-  const double dense_error = closedFormError(dense, first_ten, 2, in.elements, in.secondPiola(), in);
+  const double sparse_error =
+      closedFormError(sparse, first_ten, 2, in.elements, in.secondPiola(), in);
+  const double dense_error =
+      closedFormError(dense, first_ten, 2, in.elements, in.secondPiola(), in);
   std::cout << std::setprecision(12) << "[ Modal, 150 x L2 sparse path ] omega:";
   for (double w : sparse.omega) std::cout << ' ' << w;
   std::cout << "\n  largest rel. diff: sparse vs dense " << sparse_vs_dense

@@ -80,7 +80,9 @@ void expectSecondOrder(Drive drive) {
   EXPECT_NEAR(coarse / fine, 4.0, 0.4) << "coarse " << coarse << ", fine " << fine;
 }
 
-TEST(NewmarkForcing, SineNodalForceFollowsClosedFormAtSecondOrder) { expectSecondOrder(Drive::Force); }
+TEST(NewmarkForcing, SineNodalForceFollowsClosedFormAtSecondOrder) {
+  expectSecondOrder(Drive::Force);
+}
 
 TEST(NewmarkForcing, SineSupportMotionFollowsClosedFormAtSecondOrder) {
   expectSecondOrder(Drive::Support);

@@ -14,6 +14,8 @@
 //  - a taut string's transverse frequencies for consistent-mass linear elements (closed form in
 //    tests/support/dynamic_models.hpp);
 //  - conservation of the total energy of an undamped, conservative structure.
+#include "libstruct/solve/newmark.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,7 +27,6 @@
 #include "libstruct/model/assembler.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/modal.hpp"
-#include "libstruct/solve/newmark.hpp"
 #include "tests/support/dynamic_models.hpp"
 
 namespace flexmoor::test {
@@ -106,14 +107,15 @@ void expectTrapezoidalOscillator(int steps_per_period) {
     const double xn = h.u[n](0, node), vn = h.v[n](0, node);
     x.push_back(xn);
     trajectory_error = std::max(trajectory_error, std::abs(xn - x0 * std::cos(n * theta)) / x0);
-    amplitude_error = std::max(amplitude_error, std::abs(std::sqrt(xn * xn + m * vn * vn / k) / x0 - 1.0));
+    amplitude_error =
+        std::max(amplitude_error, std::abs(std::sqrt(xn * xn + m * vn * vn / k) / x0 - 1.0));
   }
   const double measured = periodFromCrossings(zeroCrossings(h.t, x)) / period;
   const double expected = trapezoidalPeriodRatio(omega_dt);
   std::cout << std::setprecision(10) << "[ Newmark SDOF, dt/T = 1/" << steps_per_period
-            << " ] T_num/T measured " << measured << ", exact " << expected
-            << " (rel. diff " << std::abs(measured / expected - 1.0) << "); amplitude error "
-            << amplitude_error << ", trajectory error " << trajectory_error << "\n";
+            << " ] T_num/T measured " << measured << ", exact " << expected << " (rel. diff "
+            << std::abs(measured / expected - 1.0) << "); amplitude error " << amplitude_error
+            << ", trajectory error " << trajectory_error << "\n";
   EXPECT_EQ(static_cast<int>(h.t.size()), cycles * steps_per_period + 1);
   EXPECT_LT(trajectory_error, 1e-9);
   EXPECT_LT(amplitude_error, 1e-9);
@@ -256,10 +258,11 @@ TEST(Newmark, HhtAlphaDampsHighModeAndKeepsLowMode) {
   const double low_kept = *std::max_element(last_peaks.begin(), last_peaks.end()) / q1_start;
   const double high_left = window_max(r.q[1], r.q[1].size() - 200, 200) / q2_start;
   const double decay_100 = window_max(r.q[1], 120, 20) / window_max(r.q[1], 20, 20);
-  std::cout << "[ HHT alpha = -0.1 ] rho(w1 dt) = " << rho_1 << " (10 cycles: "
-            << std::pow(rho_1, 2000) << "), rho(w2 dt) = " << rho_2 << "; low mode kept "
-            << low_kept << ", high mode left " << high_left << ", high-mode decay over 100 steps "
-            << decay_100 << " (rho^100 = " << std::pow(rho_2, 100) << ")\n";
+  std::cout << "[ HHT alpha = -0.1 ] rho(w1 dt) = " << rho_1
+            << " (10 cycles: " << std::pow(rho_1, 2000) << "), rho(w2 dt) = " << rho_2
+            << "; low mode kept " << low_kept << ", high mode left " << high_left
+            << ", high-mode decay over 100 steps " << decay_100
+            << " (rho^100 = " << std::pow(rho_2, 100) << ")\n";
   EXPECT_GT(std::pow(rho_1, 2000), 1.0 - 1e-3);
   EXPECT_LT(rho_2, 0.95);
   EXPECT_GT(low_kept, 1.0 - 1e-3);
@@ -289,7 +292,8 @@ TEST(Newmark, RayleighMassDampingGivesDampingRatio) {
 
   std::vector<double> x;
   double recurrence_error = 0.0;
-  const Eigen::Matrix3d A = amplificationMatrix(schemeConstants(o), omega * dt, o.rayleigh_mass * dt);
+  const Eigen::Matrix3d A =
+      amplificationMatrix(schemeConstants(o), omega * dt, o.rayleigh_mass * dt);
   Eigen::Vector3d s(x0, 0.0, -omega * omega * dt * dt * x0);
   for (size_t n = 0; n < h.t.size(); ++n) {
     x.push_back(h.u[n](0, node));
@@ -305,8 +309,8 @@ TEST(Newmark, RayleighMassDampingGivesDampingRatio) {
   const double delta = std::log(peaks[0] / peaks[cycles]) / cycles;
   const double measured = delta / std::sqrt(4.0 * kPi * kPi + delta * delta);
   std::cout << "[ Rayleigh mass damping ] zeta measured " << measured << ", expected " << zeta
-            << " (rel. diff " << measured / zeta - 1.0 << "); recurrence error "
-            << recurrence_error << "\n";
+            << " (rel. diff " << measured / zeta - 1.0 << "); recurrence error " << recurrence_error
+            << "\n";
   EXPECT_LT(recurrence_error, 1e-9);
   EXPECT_NEAR(measured / zeta, 1.0, 0.01);
 }
@@ -330,8 +334,8 @@ void expectTautCableModePeriod(int k) {
   const std::vector<int> transverse = modesAlong(modes, {1, 2});
   ASSERT_GE(static_cast<int>(transverse.size()), 2 * k);
   const int mode = transverse[2 * (k - 1)];  // y and z modes come in equal pairs
-  const double omega = linearStringFrequency(in.elements, k, in.tension(), in.massPerLength(),
-                                             in.stretchedLength());
+  const double omega =
+      linearStringFrequency(in.elements, k, in.tension(), in.massPerLength(), in.stretchedLength());
   EXPECT_NEAR(modes.omega[mode] / omega, 1.0, 1e-8);
 
   const model::NodalField& shape = modes.shapes[mode];
@@ -409,18 +413,18 @@ SwingResult swingCable(double amplitude, double hht_alpha, int steps_per_period 
   o.hht_alpha = hht_alpha;
   o.convergence.use_displacement = false;
   o.convergence.residual_tolerance = 1e-10;
-  const solve::DynamicReport report = solve::integrate(
-      assembler, state, o, {}, [&](const model::State& s) {
+  const solve::DynamicReport report =
+      solve::integrate(assembler, state, o, {}, [&](const model::State& s) {
         const double dE = energy(s) - E0;
         r.largest_gain = std::max(r.largest_gain, dE);
         r.largest_error = std::max(r.largest_error, std::abs(dE));
       });
-  std::cout << "[ Swinging cable, amplitude " << amplitude << ", alpha " << hht_alpha << ", dt = T1 / " << steps_per_period
-            << " ] T1 = " << T1 << " s, vibration energy " << r.vibration_energy
-            << ", largest energy error " << r.largest_error / r.vibration_energy
-            << " of it, largest gain " << r.largest_gain / r.vibration_energy << "; "
-            << report.steps << " steps, " << report.iterations << " iterations, " << report.cuts
-            << " cuts\n";
+  std::cout << "[ Swinging cable, amplitude " << amplitude << ", alpha " << hht_alpha
+            << ", dt = T1 / " << steps_per_period << " ] T1 = " << T1 << " s, vibration energy "
+            << r.vibration_energy << ", largest energy error "
+            << r.largest_error / r.vibration_energy << " of it, largest gain "
+            << r.largest_gain / r.vibration_energy << "; " << report.steps << " steps, "
+            << report.iterations << " iterations, " << report.cuts << " cuts\n";
   EXPECT_GT(r.vibration_energy, 0.0);
   return r;
 }

@@ -45,7 +45,9 @@ FlavourRun run(solve::NewtonFlavour flavour) {
   return r;
 }
 
-int total(const FlavourRun& r) { return std::accumulate(r.iterations.begin(), r.iterations.end(), 0); }
+int total(const FlavourRun& r) {
+  return std::accumulate(r.iterations.begin(), r.iterations.end(), 0);
+}
 
 TEST(NewtonFlavours, AllReachTheSameEquilibriumWithTheirOwnIterationCounts) {
   const FlavourRun full = run(solve::NewtonFlavour::Full);

@@ -26,11 +26,11 @@ namespace flexmoor::test {
 namespace {
 
 struct TautString {
-  double span = 100.0;     // L, ft
-  double E = 1.0e6;        // psf
-  double area = 0.1;       // ft^2, so EA = 1e5 lbf
-  double pull = 0.1;       // delta, ft: pretension T0 = EA lambda0 (lambda0^2 - 1) / 2 ~ 100 lbf
-  double load = 20.0;      // P, lbf
+  double span = 100.0;  // L, ft
+  double E = 1.0e6;     // psf
+  double area = 0.1;    // ft^2, so EA = 1e5 lbf
+  double pull = 0.1;    // delta, ft: pretension T0 = EA lambda0 (lambda0^2 - 1) / 2 ~ 100 lbf
+  double load = 20.0;   // P, lbf
   double EA() const { return E * area; }
 };
 
@@ -75,13 +75,14 @@ std::unique_ptr<LoadedString> loadedString(const TautString& s, int elements) {
   model::Model& m = out->m;
   const int left = m.addNode(Eigen::Vector3d::Zero());
   const int right = m.addNode(Eigen::Vector3d(s.span, 0.0, 0.0));
-  out->nodes = addStraightCable(
-      m, left, right, elements, 2, linearElasticSection(s.E, s.area, 0.0, material::Compression::Carry));
+  out->nodes =
+      addStraightCable(m, left, right, elements, 2,
+                       linearElasticSection(s.E, s.area, 0.0, material::Compression::Carry));
   out->mid = out->nodes[out->nodes.size() / 2];
   pin(m, left);
   pin(m, right);
-  const auto held = std::make_shared<model::TableFunction>(std::vector<double>{0.0},
-                                                           std::vector<double>{1.0});
+  const auto held =
+      std::make_shared<model::TableFunction>(std::vector<double>{0.0}, std::vector<double>{1.0});
   m.constrain(right, 0, s.pull, held);
   m.addNodalLoad(out->mid, Eigen::Vector3d(0.0, 0.0, -s.load));
   m.numberEquations();
@@ -132,8 +133,9 @@ void expectClosedForm(int elements, int increments) {
   const int half = static_cast<int>(nodes.size()) / 2;
   for (int k = 0; k < static_cast<int>(nodes.size()); ++k) {
     const double f = static_cast<double>(k) / half;
-    const Eigen::Vector3d expected =
-        k <= half ? Eigen::Vector3d(f * apex) : Eigen::Vector3d(apex + (f - 1.0) * (far_end - apex));
+    const Eigen::Vector3d expected = k <= half
+                                         ? Eigen::Vector3d(f * apex)
+                                         : Eigen::Vector3d(apex + (f - 1.0) * (far_end - apex));
     const Eigen::Vector3d y = m.reference().col(nodes[k]) + state.displacement.col(nodes[k]);
     EXPECT_LT((y - expected).norm(), 1e-8 * exact.deflection) << "node " << k;
   }
@@ -146,9 +148,7 @@ TEST(PretensionedCable, PointLoadMatchesClosedForm) {
 
 // The same answer reached in four increments (the solution of an elastic structure does not
 // depend on the load path).
-TEST(PretensionedCable, PointLoadInIncrementsMatchesClosedForm) {
-  expectClosedForm(8, 4);
-}
+TEST(PretensionedCable, PointLoadInIncrementsMatchesClosedForm) { expectClosedForm(8, 4); }
 
 // The self-corrective incremental scheme (Eq. 4.20): one solve per increment with the full
 // residual, no iterations. Each increment is one Newton step from the last state towards the next

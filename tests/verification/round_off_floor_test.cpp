@@ -28,7 +28,8 @@ std::unique_ptr<model::Model> stiffChain() {
   auto m = std::make_unique<model::Model>();
   for (int i = 0; i <= kElements; ++i) m->addNode({kOffset + kLength * i / kElements, 0.0, 0.0});
   const element::CableSection section{
-      kArea, 7850.0, std::make_shared<material::LinearElasticCable>(kE, material::Compression::Carry)};
+      kArea, 7850.0,
+      std::make_shared<material::LinearElasticCable>(kE, material::Compression::Carry)};
   for (int e = 0; e < kElements; ++e) m->addElement(element::makeCableElement({e, e + 1}, section));
   for (int k = 0; k < 3; ++k) {
     m->constrain(0, k);
@@ -40,9 +41,8 @@ std::unique_ptr<model::Model> stiffChain() {
 
 // An element's strain is resolved to eps |x| / l of its nodes' positions: relative to the strain,
 // about 1e-8 here, so the tension cannot be closer than that.
-const double kTensionPrecision =
-    5.0 * std::numeric_limits<double>::epsilon() * (kOffset + kLength) / (kLength / kElements) /
-    kStretch;
+const double kTensionPrecision = 5.0 * std::numeric_limits<double>::epsilon() *
+                                 (kOffset + kLength) / (kLength / kElements) / kStretch;
 
 // Axial force of the uniformly stretched cable: S A0 lambda with S = E (lambda^2 - 1) / 2
 // (Eq. 2.53).
@@ -66,7 +66,8 @@ TEST(RoundOffFloor, StiffFineChainConvergesAtItsFloorWithTheExactTension) {
   EXPECT_GT(R.floor, o.convergence.residual_tolerance);  // the plain tolerance is out of reach
   EXPECT_LT(R.relative(), R.floor);
   for (int e : {0, kElements / 2, kElements - 1})
-    EXPECT_NEAR(assembler.elementResults(state)[e].end_tension[0] / exactTension(), 1.0, kTensionPrecision);
+    EXPECT_NEAR(assembler.elementResults(state)[e].end_tension[0] / exactTension(), 1.0,
+                kTensionPrecision);
 }
 
 TEST(RoundOffFloor, TimeStepsOfTheStiffChainConverge) {

@@ -72,8 +72,8 @@ TEST(StepCutting, FailedStepsAreHalvedAndTheScheduleResumes) {
   EXPECT_EQ(fine.report.cuts, 0);
   RecordProperty("cuts", coarse.report.cuts);
   RecordProperty("difference_m", std::to_string((coarse.bob - fine.bob).norm()));
-  EXPECT_LT((coarse.bob - fine.bob).norm(), 0.02) << coarse.bob.transpose() << " vs "
-                                                  << fine.bob.transpose();
+  EXPECT_LT((coarse.bob - fine.bob).norm(), 0.02)
+      << coarse.bob.transpose() << " vs " << fine.bob.transpose();
 }
 
 TEST(StepCutting, GivesUpWithWhereAndWhyWhenCutsRunOut) {

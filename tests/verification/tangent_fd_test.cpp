@@ -89,8 +89,8 @@ model::State displacedState(const model::NodalField& X, double scale) {
   for (int i = 0; i < X.cols(); ++i) {
     const Vector3d perturbation(0.03 * std::sin(1.0 + 2.0 * i), 0.02 * std::cos(3.0 * i),
                                 -0.025 * std::sin(0.5 + i));
-    const Vector3d y = X.col(0) + scale * Q * (X.col(i) - X.col(0)) + Vector3d(0.4, -0.3, 0.2) +
-                       perturbation;
+    const Vector3d y =
+        X.col(0) + scale * Q * (X.col(i) - X.col(0)) + Vector3d(0.4, -0.3, 0.2) + perturbation;
     state.displacement.col(i) = y - X.col(i);
   }
   return state;
@@ -148,8 +148,10 @@ void expectCableTangents() {
     expectCableTangent<N>(mooneyRivlin(c), 1.6, order + " Mooney-Rivlin" + law + ", tension");
   }
   // A cable that carries compression (a bar) has a consistent tangent there too.
-  expectCableTangent<N>(linearElastic(Compression::Carry), 0.9, order + " linear elastic, compression");
-  expectCableTangent<N>(mooneyRivlin(Compression::Carry), 0.8, order + " Mooney-Rivlin, compression");
+  expectCableTangent<N>(linearElastic(Compression::Carry), 0.9,
+                        order + " linear elastic, compression");
+  expectCableTangent<N>(mooneyRivlin(Compression::Carry), 0.8,
+                        order + " Mooney-Rivlin, compression");
 }
 
 TEST(CableElement, TangentMatchesFiniteDifference) {
@@ -169,7 +171,8 @@ TEST(CableElement, SlackCableHasNoForceAndNoStiffness) {
     EXPECT_EQ(K.cwiseAbs().maxCoeff(), 0.0) << label;
   };
   const model::NodalField X2 = curvedReference(2), X3 = curvedReference(3), X4 = curvedReference(4);
-  for (const auto& m : {linearElastic(Compression::TensionOnly), mooneyRivlin(Compression::TensionOnly)}) {
+  for (const auto& m :
+       {linearElastic(Compression::TensionOnly), mooneyRivlin(Compression::TensionOnly)}) {
     check(element::CableElement<2>(firstNodes(2), sectionOf(m)), X2, displacedState(X2, 0.8), "L2");
     check(element::CableElement<3>(firstNodes(3), sectionOf(m)), X3, displacedState(X3, 0.8), "L3");
     check(element::CableElement<4>(firstNodes(4), sectionOf(m)), X4, displacedState(X4, 0.8), "L4");
@@ -191,7 +194,8 @@ TEST(Spring, TangentMatchesFiniteDifference) {
       const element::SpringElement spring(0, 1, 450.0, rest, Compression::Carry);
       const double force = spring.result({X, state, 0}).end_tension[0];
       const double l0 = rest < 0.0 ? length : rest;
-      const double l = (X.col(1) + state.displacement.col(1) - X.col(0) - state.displacement.col(0)).norm();
+      const double l =
+          (X.col(1) + state.displacement.col(1) - X.col(0) - state.displacement.col(0)).norm();
       EXPECT_NEAR(force, 450.0 * (l - l0), 1e-12 * 450.0 * l0);
       const double error = tangentError(spring, X, state, kRelativeStep * length);
       std::cout << "[ spring, rest " << l0 << ", force " << force
@@ -223,7 +227,8 @@ TEST(Assembler, TangentMatchesFiniteDifferenceOfResidual) {
   const int s = m.addNode(Vector3d(5.0, 3.0, 0.0));
   m.addElement(element::makeCableElement({a, b, c}, sectionOf(linearElastic(Compression::Carry))));
   m.addElement(element::makeCableElement({c, d}, sectionOf(mooneyRivlin(Compression::Carry))));
-  m.addElement(element::makeCableElement({d, e, f, g}, sectionOf(linearElastic(Compression::Carry)), 6));
+  m.addElement(
+      element::makeCableElement({d, e, f, g}, sectionOf(linearElastic(Compression::Carry)), 6));
   m.addElement(std::make_unique<element::SpringElement>(c, s, 3.0e4, -1.0, Compression::Carry));
   pin(m, a);
   pin(m, g);
@@ -237,8 +242,9 @@ TEST(Assembler, TangentMatchesFiniteDifferenceOfResidual) {
   model::State state = m.initialState();
   state.load_factor = 1.0;
   for (int n = 0; n < m.nodeCount(); ++n)
-    state.displacement.col(n) = 0.08 * m.reference().col(n) +
-                                Vector3d(0.05 * std::sin(n), 0.04 * std::cos(2.0 * n), -0.1 * n / 7.0);
+    state.displacement.col(n) =
+        0.08 * m.reference().col(n) +
+        Vector3d(0.05 * std::sin(n), 0.04 * std::cos(2.0 * n), -0.1 * n / 7.0);
   assembler.applyPrescribed(state);
 
   model::SparseMatrix K_sparse;
@@ -253,7 +259,8 @@ TEST(Assembler, TangentMatchesFiniteDifferenceOfResidual) {
     assembler.addFree(VectorXd::Unit(n, j) * h, plus.displacement);
     assembler.addFree(-VectorXd::Unit(n, j) * h, minus.displacement);
     K_fd.col(j) = -(solve::outOfBalance(assembler, plus, nullptr).free -
-                    solve::outOfBalance(assembler, minus, nullptr).free) / (2.0 * h);
+                    solve::outOfBalance(assembler, minus, nullptr).free) /
+                  (2.0 * h);
   }
   const double error = (K - K_fd).cwiseAbs().maxCoeff() / K.cwiseAbs().maxCoeff();
   std::cout << "[ assembled ] max |K - K_fd| / max |K| = " << error << ", |R| = " << R0.free.norm()
@@ -280,8 +287,9 @@ TEST(CableMaterial, MaterialTangentMatchesFiniteDifference) {
                                              static_cast<const material::CableMaterial*>(&mooney)})
     for (const double stretch : {0.7, 0.95, 1.0, 1.02, 1.3, 2.5}) {
       const double A11 = stretch * stretch * kA11, dgamma = 1e-6 * kA11;
-      const double fd = (law->stress(kA11, A11 + 2.0 * dgamma).T11 -
-                         law->stress(kA11, A11 - 2.0 * dgamma).T11) / (2.0 * dgamma);
+      const double fd =
+          (law->stress(kA11, A11 + 2.0 * dgamma).T11 - law->stress(kA11, A11 - 2.0 * dgamma).T11) /
+          (2.0 * dgamma);
       const double C = law->stress(kA11, A11).C1111;
       EXPECT_NEAR(C, fd, 1e-7 * std::abs(C)) << law->name() << " at stretch " << stretch;
     }
