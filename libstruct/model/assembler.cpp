@@ -119,17 +119,23 @@ void Assembler::subtractLoadStiffness(const State& state, SparseMatrix& K) const
   }
 }
 
-void Assembler::inertiaForce(const State& state, element::MassKind kind,
+std::vector<Eigen::MatrixXd> Assembler::elementMasses(element::MassKind kind) const {
+  const State reference = model_.initialState();
+  std::vector<Eigen::MatrixXd> masses(model_.elementCount());
+  for (int e = 0; e < model_.elementCount(); ++e)
+    model_.element(e).mass(context(reference, e), kind, masses[e]);
+  return masses;
+}
+
+void Assembler::inertiaForce(const std::vector<Eigen::MatrixXd>& masses, const State& state,
                              Eigen::VectorXd& force) const {
   force.setZero(3 * model_.nodeCount());
-  Eigen::MatrixXd m;
   Eigen::VectorXd a;
   for (int e = 0; e < model_.elementCount(); ++e) {
-    model_.element(e).mass(context(state, e), kind, m);
     const auto& index = full_index_[e];
     a.resize(index.size());
     for (size_t k = 0; k < index.size(); ++k) a(k) = state.acceleration.data()[index[k]];
-    const Eigen::VectorXd f = m * a;
+    const Eigen::VectorXd f = masses[e] * a;
     for (size_t k = 0; k < index.size(); ++k) force(index[k]) += f(k);
   }
 }

@@ -25,8 +25,13 @@ class Assembler {
   void externalLoad(const State& state, Eigen::VectorXd& load) const;
   // Subtracts the follower-pressure load stiffness dP/du from K (K - dP/du: non-symmetric).
   void subtractLoadStiffness(const State& state, SparseMatrix& K) const;
-  // Inertia force M u'' over all dofs, prescribed supports' accelerations included.
-  void inertiaForce(const State& state, element::MassKind kind, Eigen::VectorXd& force) const;
+  // Element mass matrices (Eq. 4.40, 4.49), in element order. They depend on the reference
+  // configuration only (total Lagrangian), so a time integration computes them once.
+  std::vector<Eigen::MatrixXd> elementMasses(element::MassKind kind) const;
+  // Inertia force M u'' over all dofs, prescribed supports' accelerations included, from the
+  // element mass matrices of elementMasses().
+  void inertiaForce(const std::vector<Eigen::MatrixXd>& masses, const State& state,
+                    Eigen::VectorXd& force) const;
   // Mass matrix on the free dofs, in the same pattern as the tangent (Eq. 4.49).
   void mass(const State& state, element::MassKind kind, SparseMatrix& M) const;
 

@@ -30,11 +30,9 @@ class NewmarkStepper {
       gamma_ = 0.5 - alpha_;
       beta_ = 0.25 * (1.0 - alpha_) * (1.0 - alpha_);
     }
-    model::State dummy = m.initialState();
-    assembler_.mass(dummy, o.mass, M_);
+    masses_ = assembler_.elementMasses(o.mass);
+    assembler_.mass(m.initialState(), o.mass, M_);
   }
-
-  const model::SparseMatrix& mass() const { return M_; }
 
   // Damping force C v on the free dofs, C = rayleigh_mass M + rayleigh_stiffness K0.
   VectorXd damping(const VectorXd& v_free) const {
@@ -74,7 +72,7 @@ class NewmarkStepper {
       const bool update = o_.flavour == NewtonFlavour::Full ? true : (it == 0 && refresh_each_step);
       Residual R = outOfBalance(assembler_, next, update ? &K : nullptr);
       VectorXd inertia_full;
-      assembler_.inertiaForce(next, o_.mass, inertia_full);
+      assembler_.inertiaForce(masses_, next, inertia_full);
       const VectorXd inertia = assembler_.restrictToFree(inertia_full);
       R.free = (1.0 + alpha_) * (R.free - damping(v)) - inertia;  // Eq. 4.63
       if (alpha_ != 0.0) R.free -= alpha_ * previous_balance;
@@ -121,7 +119,7 @@ class NewmarkStepper {
   void initialAcceleration(model::State& s) {
     assembler_.applyPrescribed(s);
     VectorXd inertia_full;
-    assembler_.inertiaForce(s, o_.mass, inertia_full);  // prescribed accelerations only
+    assembler_.inertiaForce(masses_, s, inertia_full);  // prescribed accelerations only
     const VectorXd rhs = outOfBalance(assembler_, s, nullptr).free -
                          assembler_.restrictToFree(inertia_full) -
                          damping(assembler_.restrictToFree(asVector(s.velocity)));
@@ -134,7 +132,8 @@ class NewmarkStepper {
   const model::Assembler& assembler_;
   const DynamicOptions& o_;
   double gamma_, beta_, alpha_;
-  model::SparseMatrix M_, K0_, Keff_;  // on the assembler's pattern
+  std::vector<Eigen::MatrixXd> masses_;  // element mass matrices, constant
+  model::SparseMatrix M_, K0_, Keff_;    // on the assembler's pattern
   LinearSolver linear_;
   double factor_h_ = -1.0;
   int steps_since_update_ = 0;
