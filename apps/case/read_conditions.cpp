@@ -112,13 +112,9 @@ void readPressure(CaseBuilder& b, const YAML::Node& item, const std::string& pat
   std::vector<int> elements;
   bool ok = on != nullptr;
   if (on) {
-    std::vector<YAML::Node> names;
-    if (on->IsSequence())
-      names = listItems(b.diag, *on, f.path("on"));
-    else
-      names.push_back(*on);
+    const std::vector<YAML::Node> names = listOrOne(b.diag, *on, f.path("on"));
     for (size_t i = 0; i < names.size(); ++i) {
-      const std::string where = on->IsSequence() ? itemPath(f.path("on"), i) : f.path("on");
+      const std::string where = listOrOnePath(*on, f.path("on"), i);
       const auto name = b.in.text(names[i], where);
       const auto set = name ? b.c.element_sets.find(*name) : b.c.element_sets.end();
       if (name && set == b.c.element_sets.end() && !b.broken_node_names.count(*name))

@@ -234,42 +234,24 @@ std::string stepName(CaseBuilder& b, const Fields& f, const char* kind) {
   return n ? b.in.text(*n, f.path("name")).value_or(kind) : kind;
 }
 
+// The keys each kind of step takes; static and dynamic steps share the Newton keys.
 const std::vector<std::string>& keysOf(StepSpec::Kind kind) {
+  const auto with = [](std::vector<std::string> own) {
+    for (const char* key : {"newton", "stiffness_update", "tolerance", "residual_tolerance",
+                            "criterion", "max_iterations"})
+      own.push_back(key);
+    return own;
+  };
   static const std::vector<std::string> relax = {
       "name",      "load_factor",        "tolerance", "damping",       "initial_damping_factor",
       "decrement", "residual_tolerance", "max_steps", "max_iterations"};
-  static const std::vector<std::string> statics = {"name",
-                                                   "load_factor",
-                                                   "increments",
-                                                   "control",
-                                                   "psi",
-                                                   "desired_iterations",
-                                                   "max_increments",
-                                                   "newton",
-                                                   "stiffness_update",
-                                                   "tolerance",
-                                                   "residual_tolerance",
-                                                   "criterion",
-                                                   "max_iterations",
-                                                   "pressure_stiffness"};
+  static const std::vector<std::string> statics =
+      with({"name", "load_factor", "increments", "control", "psi", "desired_iterations",
+            "max_increments", "pressure_stiffness"});
   static const std::vector<std::string> modes = {"name", "count", "shift", "mass", "tolerance"};
-  static const std::vector<std::string> dynamic = {"name",
-                                                   "schedule",
-                                                   "dt",
-                                                   "steps",
-                                                   "gamma",
-                                                   "beta",
-                                                   "hht_alpha",
-                                                   "newton",
-                                                   "stiffness_update",
-                                                   "tolerance",
-                                                   "residual_tolerance",
-                                                   "criterion",
-                                                   "max_iterations",
-                                                   "mass",
-                                                   "rayleigh",
-                                                   "max_step_cuts",
-                                                   "output_every"};
+  static const std::vector<std::string> dynamic =
+      with({"name", "schedule", "dt", "steps", "gamma", "beta", "hht_alpha", "mass", "rayleigh",
+            "max_step_cuts", "output_every"});
   switch (kind) {
     case StepSpec::Kind::Relax:
       return relax;

@@ -143,13 +143,10 @@ std::vector<CableRow> readCableRows(CaseBuilder& b, const YAML::Node& n, const s
     if (!direction || *direction < 0 || !at) continue;
     // Boundaries across the cables' direction; a meridian's hoops sit at its element ends.
     const int across = meridian ? s.divisions[0] : s.divisions[1 - *direction];
-    std::vector<YAML::Node> boundaries;
-    if (at->IsSequence())
-      boundaries = listItems(b.diag, *at, f.path("at"));
-    else
-      boundaries.push_back(*at);
+    const std::vector<YAML::Node> boundaries = listOrOne(b.diag, *at, f.path("at"));
     for (size_t k = 0; k < boundaries.size(); ++k) {
-      const auto boundary = b.in.integer(boundaries[k], f.path("at"), 0, across);
+      const auto boundary =
+          b.in.integer(boundaries[k], listOrOnePath(*at, f.path("at"), k), 0, across);
       if (boundary && section) rows.push_back({*direction, *boundary, section});
     }
   }

@@ -103,6 +103,15 @@ std::vector<YAML::Node> listItems(Diagnostics& diag, const YAML::Node& list,
   return items;
 }
 
+std::vector<YAML::Node> listOrOne(Diagnostics& diag, const YAML::Node& n, const std::string& path) {
+  if (n.IsSequence()) return listItems(diag, n, path);
+  return {n};
+}
+
+std::string listOrOnePath(const YAML::Node& n, const std::string& path, size_t i) {
+  return n.IsSequence() ? itemPath(path, i) : path;
+}
+
 std::string peekText(const YAML::Node& map, const char* key) {
   if (!map.IsMap()) return "";
   const YAML::Node value = map[key];  // invalid (not merely null) when the key is absent

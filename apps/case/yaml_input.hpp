@@ -38,6 +38,12 @@ std::vector<MapEntry> mapEntries(Diagnostics& diag, const YAML::Node& map, const
 std::vector<YAML::Node> listItems(Diagnostics& diag, const YAML::Node& list,
                                   const std::string& path);
 
+// A list's items, or a single value as a list of one (`on: roof` or `on: [roof, walls]`).
+std::vector<YAML::Node> listOrOne(Diagnostics& diag, const YAML::Node& n, const std::string& path);
+
+// The path of item i of what listOrOne read: "path[i]" for a list, "path" for a single value.
+std::string listOrOnePath(const YAML::Node& n, const std::string& path, size_t i);
+
 // The text of `key` in a map, or "" (to choose which keys apply before checking them).
 std::string peekText(const YAML::Node& map, const char* key);
 

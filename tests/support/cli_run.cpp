@@ -58,4 +58,13 @@ std::string runNamedCase(const std::string& case_name) {
   return readFile(dir / "summary.json");
 }
 
+std::string runCaseText(const std::string& name, const std::string& text) {
+  const fs::path dir = scratch(name + "-" + std::to_string(getpid()));
+  const fs::path file = dir / (name + ".yaml");
+  std::ofstream(file) << text;
+  const CliRun r = flexmoor("run " + file.string() + " -o " + dir.string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return readFile(dir / "summary.json");
+}
+
 }  // namespace flexmoor::test

@@ -26,6 +26,10 @@ std::filesystem::path scratch(const std::string& name);
 // of its summary.json.
 std::string runNamedCase(const std::string& case_name);
 
+// Writes `text` as NAME.yaml into a scratch directory of its own for this process, runs it,
+// expects exit code 0 and returns the text of its summary.json.
+std::string runCaseText(const std::string& name, const std::string& text);
+
 // A case name as a GoogleTest name: "ex1-suspended-cable-8xL2" -> "ex1_suspended_cable_8xL2".
 std::string testName(std::string case_name);
 

@@ -34,12 +34,10 @@
 //     checks that halving the radial size (16 -> 32) reduces the error.
 // Qualitative: the pole height increases with the pressure.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <regex>
@@ -54,10 +52,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using flexmoor::test::findRoot;
-using flexmoor::test::flexmoor;
 using flexmoor::test::readFile;
+using flexmoor::test::runCaseText;
 using flexmoor::test::runNamedCase;
-using flexmoor::test::scratch;
 using flexmoor::test::summaryValue;
 
 // The sheet, in inches and psi.
@@ -153,16 +150,6 @@ double poleHeight(double p, double* pole_stretch = nullptr) {
 // ---- helpers ------------------------------------------------------------------------------
 
 double relative(double value, double reference) { return (value - reference) / reference; }
-
-// Runs a case text through the command and returns its summary.json.
-std::string runCaseText(const std::string& name, const std::string& text) {
-  const fs::path dir = scratch(name + "-" + std::to_string(::getpid()));
-  const fs::path file = dir / (name + ".yaml");
-  std::ofstream(file) << text;
-  const flexmoor::test::CliRun r = flexmoor("run " + file.string() + " -o " + dir.string());
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  return readFile(dir / "summary.json");
-}
 
 // The quarter disc of T6 triangles, `radial` x `around` cells, clamped at its edge nodes (given
 // by position), relaxed to 0.3 psi then traced by arc-length control to 0.6, 0.9, 1.2, 1.5 psi.

@@ -22,11 +22,8 @@
 //     interior of the cylinder"); and the bulge between cables stays well below the expansion of
 //     the unreinforced tube at the same pressure (Green & Adkins, (lambda - 1) R = 4.52 ft).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -35,11 +32,8 @@
 
 namespace {
 
-namespace fs = std::filesystem;
-using flexmoor::test::flexmoor;
-using flexmoor::test::readFile;
+using flexmoor::test::runCaseText;
 using flexmoor::test::runNamedCase;
-using flexmoor::test::scratch;
 using flexmoor::test::summaryValue;
 
 const std::vector<std::string>& keys() {
@@ -85,15 +79,6 @@ std::string meridianCase(int elements) {
          "  radial_displacement_end_bay: {quantity: displacement_x, node: {at: [10 ft, 0, 3.75 "
          "ft]}}\n"
          "  radial_displacement_end_cable: {quantity: displacement_x, node: {at: [10 ft, 0, 0]}}\n";
-}
-
-std::string runCaseText(const std::string& name, const std::string& text) {
-  const fs::path dir = scratch(name + "-" + std::to_string(::getpid()));
-  const fs::path file = dir / (name + ".yaml");
-  std::ofstream(file) << text;
-  const flexmoor::test::CliRun r = flexmoor("run " + file.string() + " -o " + dir.string());
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  return readFile(dir / "summary.json");
 }
 
 const std::string& meridianSummary() {
