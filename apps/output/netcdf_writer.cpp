@@ -12,6 +12,16 @@ namespace flexmoor::app {
 namespace {
 
 constexpr const char* kAxis[3] = {"_x", "_y", "_z"};
+// CF auxiliary coordinates (CF 5): the record's step and load factor, and where a value sits.
+constexpr const char* kNodeCoordinates = "step_number step_name load_factor node_x node_y node_z";
+constexpr const char* kElementCoordinates =
+    "step_number step_name load_factor element_x element_y element_z";
+
+std::vector<int> oneBased(size_t count) {
+  std::vector<int> index(count);
+  for (size_t i = 0; i < count; ++i) index[i] = static_cast<int>(i) + 1;
+  return index;
+}
 
 std::string utcNow() {
   const std::time_t now = std::time(nullptr);
@@ -43,7 +53,8 @@ NetcdfWriter::NetcdfWriter(const std::string& path, const model::Model& model, c
       element_count_(model.elementCount()),
       reference_(model.reference()),
       force_unit_(unitNames(c.units).force),
-      resultant_unit_(unitNames(c.units).force + "/" + unitNames(c.units).length) {
+      resultant_unit_(unitNames(c.units).force + "/" + unitNames(c.units).length),
+      mass_unit_(unitNames(c.units).mass) {
   if (node_count_ == 0 || element_count_ == 0)
     throw std::runtime_error(path + ": cannot write results of a model without nodes or elements");
   defineHeader(model, c);
@@ -70,14 +81,23 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
   dim_end_ = file_.defineDimension("end", 2);
   dim_element_node_ = file_.defineDimension("element_node", element_nodes);
   dim_name_ = file_.defineDimension("name_strlen", kNameLength);
-  dim_step_ = file_.defineDimension("step", NC_UNLIMITED);
+  dim_step_ = file_.defineDimension("time", NC_UNLIMITED);
 
   const UnitNames u = unitNames(c.units);
-  for (int k = 0; k < 3; ++k)
+  node_index_ = defineIndex("node", dim_node_, "node number");
+  element_index_ = defineIndex("element", dim_element_, "element number");
+  for (int k = 0; k < 3; ++k) {
+    const std::string axis(1, "xyz"[k]);
     node_coordinate_[k] = file_.defineVariable(
         std::string("node") + kAxis[k], NC_DOUBLE, {dim_node_},
-        std::string(1, "xyz"[k]) + " coordinate of the node in the reference configuration",
+        axis + " coordinate of the node in the reference configuration", u.length);
+    element_coordinate_[k] = file_.defineVariable(
+        std::string("element") + kAxis[k], NC_DOUBLE, {dim_element_},
+        axis +
+            " coordinate of the element's centroid (mean of its nodes) in the reference "
+            "configuration",
         u.length);
+  }
   element_type_ =
       file_.defineVariable("element_type", NC_CHAR, {dim_element_, dim_name_}, "element type");
   element_node_count_ = file_.defineVariable("element_node_count", NC_INT, {dim_element_},
@@ -88,11 +108,19 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
       "nodes of each element in element order (first, interior..., last), 1-based");
   file_.putAttribute(element_nodes_, "start_index", 1);
 
+  // The record dimension and its coordinate (CF 4.4): static steps keep the time of the state
+  // they start from, so records of a static sequence share one time and are told apart by the
+  // auxiliary coordinates step_number, step_name and load_factor.
+  time_ = file_.defineVariable("time", NC_DOUBLE, {dim_step_},
+                               "time since the start of the analysis", u.time);
+  file_.putAttribute(time_, "standard_name", "time");
+  file_.putAttribute(time_, "axis", "T");
   step_number_ = file_.defineVariable("step_number", NC_INT, {dim_step_},
                                       "analysis step of the case this record closes, 1-based");
   step_name_ = file_.defineVariable("step_name", NC_CHAR, {dim_step_, dim_name_},
                                     "name of the analysis step");
-  time_ = file_.defineVariable("time", NC_DOUBLE, {dim_step_}, "time", u.time);
+  for (const int text : {element_type_, step_name_})  // read as strings, not as bytes
+    file_.putAttribute(text, "_Encoding", "utf-8");
   load_factor_ = file_.defineVariable("load_factor", NC_DOUBLE, {dim_step_}, "load factor", "1");
 
   const std::vector<int> step_node = {dim_step_, dim_node_};
@@ -101,9 +129,20 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
       defineVector3("position", step_node, "coordinate in the current configuration", u.length);
   velocity_ = defineVector3("velocity", step_node, "velocity", u.length + "/" + u.time);
   reaction_ = defineVector3("reaction", step_node, "support reaction (zero at free dofs)", u.force);
+  for (const Vector3Variable* v : {&displacement_, &position_, &velocity_, &reaction_})
+    for (const int id : v->id) file_.putAttribute(id, "coordinates", kNodeCoordinates);
   tension_end_ =
       file_.defineVariable("tension_end", NC_DOUBLE, {dim_step_, dim_element_, dim_end_},
                            "axial force at the first and the last node of the element", u.force);
+  file_.putAttribute(tension_end_, "coordinates", kElementCoordinates);
+  file_.putAttribute(tension_end_, "_FillValue", NC_FILL_DOUBLE);  // membranes and point masses
+}
+
+int NetcdfWriter::defineIndex(const std::string& name, int dimension,
+                              const std::string& long_name) {
+  const int id = file_.defineVariable(name, NC_INT, {dimension}, long_name + ", 1-based");
+  file_.putAttribute(id, "start_index", 1);
+  return id;
 }
 
 NetcdfWriter::Vector3Variable NetcdfWriter::defineVector3(const std::string& name,
@@ -129,12 +168,24 @@ void NetcdfWriter::writeMesh(const model::Model& model) {
     }
     file_.put(node_coordinate_[k], {0}, {nodes}, x.data());
   }
+  file_.put(node_index_, {0}, {nodes}, oneBased(nodes).data());
+  const size_t elements = element_count_;
+  file_.put(element_index_, {0}, {elements}, oneBased(elements).data());
   std::vector<int> counts, nodes_1based;
+  model::NodalField centroid = model::NodalField::Zero(3, element_count_);
   for (int e = 0; e < element_count_; ++e) {
     const element::Element& element = model.element(e);
     putText(element_type_, e, element.typeName());
     counts.push_back(static_cast<int>(element.nodes().size()));
-    for (const int n : element.nodes()) nodes_1based.push_back(n + 1);
+    for (const int n : element.nodes()) {
+      nodes_1based.push_back(n + 1);
+      centroid.col(e) += reference_.col(n) / static_cast<double>(element.nodes().size());
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    std::vector<double> x(elements);
+    for (size_t e = 0; e < elements; ++e) x[e] = centroid(k, e);
+    file_.put(element_coordinate_[k], {0}, {elements}, x.data());
   }
   file_.put(element_node_count_, {0}, {counts.size()}, counts.data());
   file_.put(element_nodes_, {0}, {nodes_1based.size()}, nodes_1based.data());
@@ -156,6 +207,8 @@ void NetcdfWriter::definePoints(const ResultFrame& first) {
   tension_point_ = file_.defineVariable(
       "tension_point", NC_DOUBLE, {dim_step_, dim_point_},
       "axial force at the integration points, element by element in element order", force_unit_);
+  file_.putAttribute(tension_point_, "coordinates",
+                     "step_number step_name load_factor point_element");
   const bool membranes = std::any_of(first.elements.begin(), first.elements.end(),
                                      [](const auto& r) { return !r.point_resultant.empty(); });
   if (membranes)
@@ -168,6 +221,7 @@ void NetcdfWriter::definePoints(const ResultFrame& first) {
                                      "(mean over its integration points, per current length)",
                                  resultant_unit_);
       file_.putAttribute(*id, "_FillValue", NC_FILL_DOUBLE);  // elements that are not membranes
+      file_.putAttribute(*id, "coordinates", kElementCoordinates);
     }
   file_.endDefine();
   file_.put(element_point_count_, {0}, {element_points_.size()}, element_points_.data());
@@ -216,7 +270,12 @@ void NetcdfWriter::gatherTensions(std::vector<Slab>& slabs, const ResultFrame& f
   Slab points{tension_point_, {records_, 0}, {1, 0}, {}};
   for (size_t e = 0; e < elements; ++e) {
     const element::ElementResult& r = frame.elements[e];
+    const bool line = !r.point_tension.empty();  // an axial force applies to lines only
     for (int end = 0; end < 2; ++end) {
+      if (!line) {
+        ends.values.push_back(NC_FILL_DOUBLE);
+        continue;
+      }
       requireFinite(r.end_tension[end], path(), [&] {
         return "tension_end[step " + std::to_string(records_) + ", element " + std::to_string(e) +
                ", end " + std::to_string(end) + "]";
@@ -260,11 +319,19 @@ void NetcdfWriter::defineModes(size_t count) {
   mode_count_ = count;
   file_.redefine();
   dim_mode_ = file_.defineDimension("mode", count);
+  const int mode_index = defineIndex("mode", dim_mode_, "mode number in ascending frequency");
   angular_frequency_ = file_.defineVariable("angular_frequency", NC_DOUBLE, {dim_step_, dim_mode_},
                                             "natural circular frequency of the mode", "rad/s");
+  file_.putAttribute(angular_frequency_, "_FillValue", NC_FILL_DOUBLE);  // records of other steps
+  // Mass-normalised (phi^T M phi = 1): a shape has the units of mass^-1/2.
   mode_shape_ = defineVector3("mode_shape", {dim_step_, dim_mode_, dim_node_},
-                              "component of the mass-normalised mode shape", "");
+                              "component of the mass-normalised mode shape", mass_unit_ + "^-0.5");
+  for (const int id : mode_shape_.id) {
+    file_.putAttribute(id, "_FillValue", NC_FILL_DOUBLE);
+    file_.putAttribute(id, "coordinates", kNodeCoordinates);
+  }
   file_.endDefine();
+  file_.put(mode_index, {0}, {count}, oneBased(count).data());
 }
 
 void NetcdfWriter::gatherModes(std::vector<Slab>& slabs, const ResultFrame& frame) {

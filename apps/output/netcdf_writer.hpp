@@ -1,18 +1,26 @@
 #pragma once
-// DIR/<case>.nc: the results of a run in netCDF-4, CF-1.8 style (every variable has `long_name`
-// and, when it has one, `units` in the case's unit system), streamed one record per solved step.
+// DIR/<case>.nc: the results of a run in netCDF-4 following CF-1.8 where it applies: every
+// variable has `long_name` and, when it has one, `units` in the case's unit system; coordinates
+// are declared so that xarray and other CF readers attach them.
 //
 // Dimensions: node, element, end (2), element_node (all nodes of all elements), point (all
-// integration points of all elements; defined with the first record, whose element results give
-// the layout), name_strlen, and the record dimension step.
+// integration points of the line elements; defined with the first record, whose element results
+// give the layout), name_strlen, mode (with the first modes step) and the record dimension time.
 //
-// Mesh: node_x/_y/_z (reference coordinates), element_type (name), connectivity as a CF
-// contiguous ragged array element_node_count + element_nodes (1-based nodes along the element),
-// and the integration points as element_point_count + point_element (1-based element).
+// Coordinates: time(time) (standard_name time, axis T; static steps keep the time they start
+// from), node(node), element(element) and mode(mode), 1-based numbers; auxiliary coordinates
+// (the `coordinates` attribute) node_x/_y/_z (reference coordinates) on nodal variables,
+// element_x/_y/_z (reference centroids) on element variables, point_element on point variables,
+// and step_number, step_name, load_factor on every record variable.
 //
-// Per step: step_number (1-based step of the case), step_name, time, load_factor,
-// displacement_/position_/velocity_/reaction_x/_y/_z (step, node), tension_end (step, element,
-// end), tension_point (step, point).
+// Mesh: element_type (name), connectivity as a CF contiguous ragged array element_node_count +
+// element_nodes (1-based nodes along the element), and the integration points as
+// element_point_count + point_element (1-based element).
+//
+// Per record: displacement_/position_/velocity_/reaction_x/_y/_z (time, node), tension_end (time,
+// element, end; _FillValue for elements without an axial force), tension_point (time, point),
+// membrane_resultant_max/_min (time, element; _FillValue off membranes), angular_frequency (time,
+// mode) and mode_shape_x/_y/_z (time, mode, node; mass^-1/2) with _FillValue off modes steps.
 //
 // Each write is flushed to disk (nc_sync), so a run that is killed keeps every finished record.
 // No NaN or infinity is ever written: a frame holding one is refused as a whole.
@@ -54,6 +62,8 @@ class NetcdfWriter {
   void defineHeader(const model::Model& model, const Case& c);
   Vector3Variable defineVector3(const std::string& name, const std::vector<int>& dimensions,
                                 const std::string& long_name, const std::string& units);
+  // A 1-based integer coordinate variable of `dimension` (node, element, mode).
+  int defineIndex(const std::string& name, int dimension, const std::string& long_name);
   void writeMesh(const model::Model& model);
   void definePoints(const ResultFrame& first);
   void defineModes(size_t count);
@@ -69,13 +79,14 @@ class NetcdfWriter {
   int node_count_ = 0;
   int element_count_ = 0;
   model::NodalField reference_;  // for position = reference + displacement
-  std::string force_unit_, resultant_unit_;
+  std::string force_unit_, resultant_unit_, mass_unit_;
   std::vector<int> element_points_;  // integration points per element, from the first frame
   size_t records_ = 0;
 
   int dim_step_ = -1, dim_node_ = -1, dim_element_ = -1, dim_end_ = -1, dim_name_ = -1;
   int dim_element_node_ = -1, dim_point_ = -1;
-  std::array<int, 3> node_coordinate_{};
+  std::array<int, 3> node_coordinate_{}, element_coordinate_{};
+  int node_index_ = -1, element_index_ = -1;
   int element_type_ = -1, element_node_count_ = -1, element_nodes_ = -1;
   int step_number_ = -1, step_name_ = -1, time_ = -1, load_factor_ = -1;
   Vector3Variable displacement_, position_, velocity_, reaction_;

@@ -37,7 +37,7 @@ TEST(DynamicRun, StreamsEveryNthStepOfAScheduleAndReportsProgress) {
   ASSERT_EQ(nc_open((dir / "driven-taut-cable.nc").c_str(), NC_NOWRITE, &file), NC_NOERR);
   int step_dim = -1;
   size_t records = 0;
-  ASSERT_EQ(nc_inq_dimid(file, "step", &step_dim), NC_NOERR);
+  ASSERT_EQ(nc_inq_dimid(file, "time", &step_dim), NC_NOERR);
   ASSERT_EQ(nc_inq_dimlen(file, step_dim, &records), NC_NOERR);
   // The static and the modes step's records, then accepted steps 4, 8, ..., 60 of the dynamic
   // step.

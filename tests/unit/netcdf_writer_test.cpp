@@ -155,7 +155,7 @@ TEST_F(NetcdfWriterTest, DimensionsMeshAndGlobalAttributesDescribeTheModel) {
   EXPECT_EQ(nc.dimension("end"), 2u);
   EXPECT_EQ(nc.dimension("element_node"), 3u);
   EXPECT_EQ(nc.dimension("point"), 3u);
-  EXPECT_EQ(nc.dimension("step"), 2u);
+  EXPECT_EQ(nc.dimension("time"), 2u);
   EXPECT_EQ(nc.text(NC_GLOBAL, "Conventions"), "CF-1.8");
   EXPECT_EQ(nc.text(NC_GLOBAL, "title"), "one three-node cable");
   EXPECT_EQ(nc.text(NC_GLOBAL, "case_name"), "writer-test");
@@ -187,16 +187,45 @@ TEST_F(NetcdfWriterTest, VariablesCarryUnitsOfTheCaseUnitSystem) {
   EXPECT_FALSE(nc.text(nc.variable("displacement_x"), "long_name").empty());
 }
 
+// CF-1.8: time is the record coordinate (4.4), nodes and elements are numbered coordinates, and
+// every record variable names its auxiliary coordinates (5) so that readers attach them.
+TEST_F(NetcdfWriterTest, CoordinatesAreDeclaredTheCfWay) {
+  { NetcdfWriter(path_, *case_.model, case_).write(frameOf(0, first_)); }
+  const Reader nc(path_);
+  EXPECT_EQ(nc.text(nc.variable("time"), "standard_name"), "time");
+  EXPECT_EQ(nc.text(nc.variable("time"), "axis"), "T");
+  EXPECT_EQ(nc.ints("node"), (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(nc.ints("element"), (std::vector<int>{1}));
+  EXPECT_EQ(nc.doubles("element_x"), (std::vector<double>{5.0}));  // centroid of 0, 5, 10 ft
+  EXPECT_EQ(nc.text(nc.variable("displacement_x"), "coordinates"),
+            "step_number step_name load_factor node_x node_y node_z");
+  EXPECT_EQ(nc.text(nc.variable("tension_end"), "coordinates"),
+            "step_number step_name load_factor element_x element_y element_z");
+  EXPECT_EQ(nc.text(nc.variable("tension_point"), "coordinates"),
+            "step_number step_name load_factor point_element");
+  EXPECT_EQ(nc.text(nc.variable("step_name"), "_Encoding"), "utf-8");
+}
+
+// An element without an axial force (a membrane or a point mass reports no line tensions) gets
+// tension_end's _FillValue, not a zero force.
+TEST_F(NetcdfWriterTest, EndTensionIsMissingOnElementsWithoutAxialForce) {
+  ResultFrame frame = frameOf(0, first_);
+  frame.elements[0].point_tension.clear();
+  { NetcdfWriter(path_, *case_.model, case_).write(frame); }
+  const Reader nc(path_);
+  EXPECT_EQ(nc.doubles("tension_end"), (std::vector<double>{NC_FILL_DOUBLE, NC_FILL_DOUBLE}));
+}
+
 TEST_F(NetcdfWriterTest, EachRecordIsReadableFromDiskAsSoonAsItIsWritten) {
   NetcdfWriter writer(path_, *case_.model, case_);
-  EXPECT_EQ(Reader(path_).dimension("step"), 0u);
+  EXPECT_EQ(Reader(path_).dimension("time"), 0u);
   writer.write(frameOf(0, first_));
-  EXPECT_EQ(Reader(path_).dimension("step"), 1u);
+  EXPECT_EQ(Reader(path_).dimension("time"), 1u);
   writer.write(frameOf(1, second_));
   EXPECT_EQ(writer.records(), 2u);
 
   const Reader nc(path_);  // the writer is still open: the records were synced
-  EXPECT_EQ(nc.dimension("step"), 2u);
+  EXPECT_EQ(nc.dimension("time"), 2u);
   EXPECT_EQ(nc.row("step_name", 0), "relax");
   EXPECT_EQ(nc.row("step_name", 1), "static");
   EXPECT_EQ(nc.ints("step_number"), (std::vector<int>{1, 2}));
@@ -232,7 +261,7 @@ TEST_F(NetcdfWriterTest, NaNDisplacementIsRefusedNamingVariableAndIndex) {
     EXPECT_NE(std::string(e.what()).find(path_), std::string::npos) << e.what();
   }
   EXPECT_EQ(writer.records(), 1u);
-  EXPECT_EQ(Reader(path_).dimension("step"), 1u);  // nothing of the refused record was written
+  EXPECT_EQ(Reader(path_).dimension("time"), 1u);  // nothing of the refused record was written
 }
 
 TEST_F(NetcdfWriterTest, InfiniteTensionIsRefused) {
