@@ -1,0 +1,26 @@
+#pragma once
+// The front of a wave train (Example 9): still water ahead of a front that starts at distance x0
+// along the wave's heading and moves with the group speed (the speed of the wave energy) or the
+// phase speed, and a smooth ramp of the amplitude over `ramp_periods` wave periods behind it, so
+// that the structure is not struck impulsively. The ramp is 3 s^2 - 2 s^3 in the distance behind
+// the front, s in [0, 1] over ramp_periods T c_front.
+namespace flexmoor::hydro {
+
+struct WaveComponent;
+
+struct WaveFront {
+  enum class Speed { Group, Phase };
+  double start = 0.0;  // x0: front position along the heading at t = 0
+  Speed speed = Speed::Group;
+  double ramp_periods = 1.0;  // 0: the full amplitude right behind the front
+};
+
+// The amplitude factor E in [0, 1] of `c` at distance xi along its heading and time t, and its
+// time derivative dE/dt.
+struct Envelope {
+  double value = 1.0, rate = 0.0;
+};
+Envelope frontEnvelope(const WaveFront& front, const WaveComponent& c, double xi, double t,
+                       double depth, double g);
+
+}  // namespace flexmoor::hydro
