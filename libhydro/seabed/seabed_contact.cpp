@@ -1,0 +1,34 @@
+#include "libhydro/seabed/seabed_contact.hpp"
+
+#include <cmath>
+
+namespace flexmoor::hydro {
+
+SeabedPointLoad seabedLoad(const SeabedProperties& bed, double delta, const Eigen::Vector3d& n,
+                           double width, const Eigen::Vector3d& u_dot) {
+  using Eigen::Matrix3d;
+  using Eigen::Vector3d;
+  SeabedPointLoad out;
+  if (!(delta > 0.0)) return out;
+  out.contact = true;
+  const Matrix3d nn = n * n.transpose();
+  const double N = (bed.stiffness * delta - bed.damping * u_dot.dot(n)) * width;
+  // dN/dx = -k_b d n (d delta / dx = -n), dN/du' = -c_b d n.
+  const Vector3d dN_dx = -bed.stiffness * width * n, dN_dv = -bed.damping * width * n;
+  out.force = N * n;
+  out.d_position = n * dN_dx.transpose();
+  out.d_velocity = n * dN_dv.transpose();
+  if (bed.friction > 0.0 && N > 0.0) {
+    const Vector3d vt = u_dot - u_dot.dot(n) * n;
+    const double s = std::sqrt(vt.squaredNorm() + bed.slip_speed * bed.slip_speed);
+    const Vector3d phi = vt / s;  // |phi| < 1, -> v_t / |v_t| when sliding
+    const Matrix3d dphi = (Matrix3d::Identity() / s - vt * vt.transpose() / (s * s * s)) *
+                          (Matrix3d::Identity() - nn);
+    out.force -= bed.friction * N * phi;
+    out.d_position -= bed.friction * phi * dN_dx.transpose();
+    out.d_velocity -= bed.friction * (phi * dN_dv.transpose() + N * dphi);
+  }
+  return out;
+}
+
+}  // namespace flexmoor::hydro
