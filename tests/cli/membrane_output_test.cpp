@@ -3,6 +3,7 @@
 // whose resultant is known in closed form.
 #include <gtest/gtest.h>
 #include <netcdf.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <fstream>
@@ -57,7 +58,8 @@ std::vector<double> cellScalars(const std::string& vtk, const std::string& name,
 }
 
 TEST(MembraneOutput, PrincipalResultantsInNetcdfVtkAndSummaryMatchClosedForm) {
-  const auto dir = flexmoor::test::scratch("membrane-output");
+  // A directory of this process: other test processes may run the same test side by side.
+  const auto dir = flexmoor::test::scratch("membrane-output-" + std::to_string(getpid()));
   std::ofstream(dir / "sheet.yaml") << kStretchedSheet;
   const auto r = flexmoor("run " + (dir / "sheet.yaml").string() + " -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;

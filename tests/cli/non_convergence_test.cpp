@@ -10,6 +10,7 @@
 // round-off only), carry the step name "... (last converged)", and hold only finite numbers.
 #include <gtest/gtest.h>
 #include <netcdf.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -68,7 +69,8 @@ void expectLastRecordFinite(int file, int record_dim, size_t record) {
 }
 
 TEST(Cli, NonConvergenceExitsWith3AndKeepsTheLastConvergedState) {
-  const fs::path dir = flexmoor::test::scratch("diverge");
+  // A directory of this process: other test processes may run the same test side by side.
+  const fs::path dir = flexmoor::test::scratch("diverge-" + std::to_string(getpid()));
   const fs::path file = dir / "diverge.yaml";
   std::string text =
       readFile(fs::path(FLEXMOOR_SOURCE_DIR) / "cases/seed/ex1-suspended-cable-8xL2.yaml");
