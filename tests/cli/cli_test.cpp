@@ -105,20 +105,4 @@ TEST(Cli, BadCaseIsRefusedWithEveryProblemAndItsLine) {
   EXPECT_FALSE(fs::exists(dir / "bad.nc")) << "nothing may run on bad input";
 }
 
-TEST(Cli, NonConvergenceExitsWith3AndKeepsTheLastConvergedState) {
-  const fs::path dir = scratch("diverge");
-  const fs::path file = dir / "diverge.yaml";
-  std::string text =
-      readFile(fs::path(FLEXMOOR_SOURCE_DIR) / "cases/seed/ex1-suspended-cable-8xL2.yaml");
-  // One relaxation step cannot reach equilibrium.
-  text = std::regex_replace(text, std::regex("damping: 10000\\}"), "damping: 10000, max_steps: 1}");
-  text = std::regex_replace(text, std::regex("name: ex1-suspended-cable-8xL2"), "name: diverge");
-  std::ofstream(file) << text;
-  const CliRun r = flexmoor("run " + file.string() + " -o " + dir.string());
-  EXPECT_EQ(r.exit_code, 3) << r.output;
-  EXPECT_NE(r.output.find("did not converge"), std::string::npos) << r.output;
-  EXPECT_TRUE(fs::exists(dir / "diverge.nc")) << r.output;
-  EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
-}
-
 }  // namespace

@@ -3,9 +3,11 @@
 // whose resultant is known in closed form.
 #include <gtest/gtest.h>
 #include <netcdf.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -44,8 +46,20 @@ summary:
   n_min: {quantity: resultant_min, element: sheet.3}
 )";
 
+// The `count` values of the cell scalar `name` of a legacy VTK file (after its LOOKUP_TABLE line).
+std::vector<double> cellScalars(const std::string& vtk, const std::string& name, size_t count) {
+  const size_t at = vtk.find("SCALARS " + name + " double 1\nLOOKUP_TABLE default\n");
+  if (at == std::string::npos) return {};
+  std::istringstream in(vtk.substr(vtk.find("default\n", at) + 8));
+  std::vector<double> values;
+  double v = 0.0;
+  while (values.size() < count && in >> v) values.push_back(v);
+  return values;
+}
+
 TEST(MembraneOutput, PrincipalResultantsInNetcdfVtkAndSummaryMatchClosedForm) {
-  const auto dir = flexmoor::test::scratch("membrane-output");
+  // A directory of this process: other test processes may run the same test side by side.
+  const auto dir = flexmoor::test::scratch("membrane-output-" + std::to_string(getpid()));
   std::ofstream(dir / "sheet.yaml") << kStretchedSheet;
   const auto r = flexmoor("run " + (dir / "sheet.yaml").string() + " -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -70,9 +84,14 @@ TEST(MembraneOutput, PrincipalResultantsInNetcdfVtkAndSummaryMatchClosedForm) {
   EXPECT_NEAR(flexmoor::test::summaryValue(json, "n_min") / expected, 1.0, 1e-9) << json;
   EXPECT_NE(json.find("\"n_max\": \"N/m\""), std::string::npos) << json;
 
+  // VTK: one value per cell (the two cables first, written as 0, then the eight triangles).
   const std::string vtk = flexmoor::test::readFile(dir / "stretched-sheet-1.vtk");
-  EXPECT_NE(vtk.find("SCALARS resultant_max double 1"), std::string::npos);
-  EXPECT_NE(vtk.find("SCALARS resultant_min double 1"), std::string::npos);
+  for (const char* name : {"resultant_max", "resultant_min"}) {
+    const std::vector<double> n = cellScalars(vtk, name, elements);
+    ASSERT_EQ(n.size(), elements) << name;
+    for (size_t e = 0; e < 2; ++e) EXPECT_EQ(n[e], 0.0) << name << " cable " << e;
+    for (size_t e = 2; e < elements; ++e) EXPECT_NEAR(n[e] / expected, 1.0, 1e-9) << name << e;
+  }
 }
 
 }  // namespace

@@ -9,16 +9,20 @@
 //   radial displacement (lambda - 1) R,  N_theta = p lambda R,
 //   N_z = 2 h0 (1 - lambda^-2) (C1 + C2 lambda^2) / lambda.
 //
-// Tolerances:
-//  - 2 x Q8 quadrant (the dissertation's quadratic model) and the axisymmetric meridian: 1% of the
-//    exact value at every pressure, including p = 5 (stretch 2.38, 97% of the limit pressure), for
-//    the radial displacement and both resultants at p = 5.
+// Tolerances (relative, just above the largest error each case measures, margin stated):
+//  - 2 x Q8 quadrant (the dissertation's quadratic model): radial displacement at every pressure,
+//    including p = 5 (stretch 2.38, 97% of the limit pressure), 0.65% (measured 0.584% at p = 5);
+//    the resultants at p = 5, 0.4% (measured N_theta 0.337%, N_z 0.073%).
+//  - axisymmetric meridian (2 quadratic elements: the exact plane-strain tube, up to the solver's
+//    tolerance): 1e-7 for the displacements and the resultants (measured 3.7e-8 at p = 5, where
+//    Newton stops with the displacement test at 0.005 and the residual test at 1e-8).
 //  - 8 x Q4 quadrant (the dissertation's linear model): its flat facets make a 32-sided prism.
 //    Each facet carries the exact strain of the tube, but a vertex between two facets is in
 //    equilibrium with N_theta = p lambda R cos(pi / 32): the model is the exact tube at the
-//    pressure p cos(pi / 32). Checked (a) against that faceted closed form, within 1e-4 (solver
-//    tolerance), and (b) against the exact tube with the looser bound it implies: 1.5% for
-//    p <= 4 and 7% at p = 5, where the 0.5% lower pressure is amplified by the steep curve
+//    pressure p cos(pi / 32). Checked (a) against that faceted closed form, within 5e-8 (solver
+//    tolerance: measured 1.9e-8 at p = 1; the resultants at p = 5 within 2e-8, measured
+//    5.6e-9), and (b) against the exact tube with the looser bound it implies: 1.5% for p <= 4
+//    and 7% at p = 5, where the 0.5% lower pressure is amplified by the steep curve
 //    (d ln(lambda) / d ln(p) = (p / p_lim) / (4 (1 - p / p_lim)) = 7.8); the Q4 model is stiffer
 //    (below the exact displacement) at every pressure.
 #include <gtest/gtest.h>
@@ -52,14 +56,15 @@ double relative(double value, double reference) { return (value - reference) / r
 
 struct TubeCase {
   const char* case_name;
-  double tolerance;  // relative, on every pressure and on the resultants at p = 5
+  double tolerance;            // relative, on the radial displacement at every pressure
+  double resultant_tolerance;  // relative, on the resultants at p = 5
 };
 void PrintTo(const TubeCase& c, std::ostream* os) { *os << c.case_name; }
 
 class Example3Tube : public ::testing::TestWithParam<TubeCase> {};
 
-// Radial displacement at p = 1..5 and the hoop and axial resultants at p = 5 within 1% of Green
-// & Adkins.
+// Radial displacement at p = 1..5 and the hoop and axial resultants at p = 5 against Green &
+// Adkins.
 TEST_P(Example3Tube, NamedCaseMatchesGreenAdkinsAtEveryPressure) {
   const TubeCase c = GetParam();
   const std::string json = runNamedCase(c.case_name);
@@ -77,17 +82,17 @@ TEST_P(Example3Tube, NamedCaseMatchesGreenAdkinsAtEveryPressure) {
             << hoopResultant(5) << " (" << 100.0 * relative(hoop, hoopResultant(5)) << " %); N_z "
             << axial << ", exact " << axialResultant(5) << " ("
             << 100.0 * relative(axial, axialResultant(5)) << " %)\n";
-  EXPECT_LT(std::abs(relative(hoop, hoopResultant(5))), c.tolerance) << hoop;
-  EXPECT_LT(std::abs(relative(axial, axialResultant(5))), c.tolerance) << axial;
+  EXPECT_LT(std::abs(relative(hoop, hoopResultant(5))), c.resultant_tolerance) << hoop;
+  EXPECT_LT(std::abs(relative(axial, axialResultant(5))), c.resultant_tolerance) << axial;
   EXPECT_NE(json.find("\"hoop_resultant_p5\": \"lbf/ft\""), std::string::npos) << json;
 }
 
 INSTANTIATE_TEST_SUITE_P(GreenAdkins, Example3Tube,
-                         ::testing::Values(TubeCase{"ex3-tube-inflation-2xQ8", 0.01},
-                                           TubeCase{"ex3-tube-inflation-axisymmetric", 0.01}),
+                         ::testing::Values(TubeCase{"ex3-tube-inflation-2xQ8", 0.0065, 0.004},
+                                           TubeCase{"ex3-tube-inflation-axisymmetric", 1e-7, 1e-7}),
                          flexmoor::test::CaseParamName{});
 
-// The 8 x Q4 quadrant: the exact faceted prism (Green & Adkins at p cos(pi / 32)) within 1e-4,
+// The 8 x Q4 quadrant: the exact faceted prism (Green & Adkins at p cos(pi / 32)) within 5e-8,
 // and the exact tube within 1.5% for p <= 4 and 7% at p = 5, always from below.
 TEST(Example3Q4, NamedCaseIsTheFacetedTubeAndStaysWithinItsBound) {
   const std::string json = runNamedCase("ex3-tube-inflation-8xQ4");
@@ -101,7 +106,7 @@ TEST(Example3Q4, NamedCaseIsTheFacetedTubeAndStaysWithinItsBound) {
               << " %)\n";
     ::testing::Test::RecordProperty(key(p) + "_error_percent",
                                     std::to_string(100.0 * relative(fe, exact)));
-    EXPECT_LT(std::abs(relative(fe, faceted)), 1e-4) << key(p);
+    EXPECT_LT(std::abs(relative(fe, faceted)), 5e-8) << key(p);
     EXPECT_LT(fe, exact) << key(p);
     EXPECT_LT(std::abs(relative(fe, exact)), p <= 4 ? 0.015 : 0.07) << key(p);
   }
@@ -111,9 +116,11 @@ TEST(Example3Q4, NamedCaseIsTheFacetedTubeAndStaysWithinItsBound) {
   const double axial = summaryValue(json, "axial_resultant_p5");
   std::cout << "[ ex3-tube-inflation-8xQ4 ] p = 5: N_theta " << hoop << " lbf/ft (exact tube "
             << 100.0 * relative(hoop, hoopResultant(5)) << " %), N_z " << axial << " ("
-            << 100.0 * relative(axial, axialResultant(5)) << " %)\n";
-  EXPECT_LT(std::abs(relative(hoop, hoopResultant(5 * facet))), 1e-4) << hoop;
-  EXPECT_LT(std::abs(relative(axial, axialResultant(5 * facet))), 1e-4) << axial;
+            << 100.0 * relative(axial, axialResultant(5)) << " %); faceted "
+            << relative(hoop, hoopResultant(5 * facet)) << ", "
+            << relative(axial, axialResultant(5 * facet)) << "\n";
+  EXPECT_LT(std::abs(relative(hoop, hoopResultant(5 * facet))), 2e-8) << hoop;
+  EXPECT_LT(std::abs(relative(axial, axialResultant(5 * facet))), 2e-8) << axial;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <random>
 
 #include "libstruct/element/axisymmetric_membrane.hpp"
@@ -240,9 +241,10 @@ TEST(HoopCable, RadialStiffnessMatchesFiniteDifference) {
 }
 
 // Example 3 (seed-examples.md, Green & Adkins): radial displacement (lambda - 1) R at p = 1..5,
-// every model within 1% of the exact solution (the tolerance), including p = 5 where the
-// stretch is about 2.38. Newton with the consistent pressure load stiffness, one increment per
-// unit of pressure.
+// including p = 5 where the stretch is about 2.38. Newton with the consistent pressure load
+// stiffness, one increment per unit of pressure. Tolerances just above the largest measured
+// error of each model: 2 x Q8 0.584% (at p = 5) -> 0.65%; axisymmetric (2 quadratic elements, the
+// exact plane-strain tube up to round-off) 5.7e-14 -> 1e-12; 16 x Q4 1.58% (p = 5) -> 1.7%.
 struct TubeModel {
   const char* name;
   std::function<std::unique_ptr<model::Model>(const test::TubeInputs&)> build;
@@ -265,6 +267,8 @@ TEST_P(Example3, RadialDisplacementMatchesGreenAdkins) {
     solve::solveStatic(assembler, s, o);
     const double exact = (test::tubeStretchAtPressure(tube, p) - 1.0) * tube.radius;
     const double radial = s.displacement(0, 0);
+    std::cout << "[ " << GetParam().name << " ] p = " << p << ": relative error "
+              << (radial - exact) / exact << "\n";
     EXPECT_NEAR(radial, exact, GetParam().tolerance * exact) << "p = " << p;
   }
 }
@@ -273,11 +277,11 @@ INSTANTIATE_TEST_SUITE_P(
     Models, Example3,
     ::testing::Values(
         TubeModel{"TwoQ8", [](const test::TubeInputs& t) { return test::quarterTube(t, 2, 8); },
-                  0.01},
+                  0.0065},
         TubeModel{"Axisymmetric",
-                  [](const test::TubeInputs& t) { return test::axisymmetricTube(t, 2, 3); }, 0.01},
+                  [](const test::TubeInputs& t) { return test::axisymmetricTube(t, 2, 3); }, 1e-12},
         TubeModel{"SixteenQ4",
-                  [](const test::TubeInputs& t) { return test::quarterTube(t, 16, 4); }, 0.02}),
+                  [](const test::TubeInputs& t) { return test::quarterTube(t, 16, 4); }, 0.017}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
