@@ -1,0 +1,152 @@
+#include "apps/case/yaml_load.hpp"
+
+#include <yaml-cpp/depthguard.h>
+
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace flexmoor::app {
+namespace {
+
+const std::string kTooDeep = "lists and maps nested deeper than " + std::to_string(kMaxNesting) +
+                             " levels (expected the few levels of a case file)";
+
+std::optional<std::string> readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Whether the quoted string whose opening quote is text[open] is closed before the text ends
+// ('' is a quote inside '...', \" one inside "...").
+bool quoteCloses(const std::string& text, size_t open) {
+  const char quote = text[open];
+  for (size_t i = open + 1; i < text.size(); ++i) {
+    if (quote == '"' && text[i] == '\\') {
+      ++i;
+    } else if (text[i] == quote) {
+      if (quote == '\'' && i + 1 < text.size() && text[i + 1] == '\'')
+        ++i;
+      else
+        return true;
+    }
+  }
+  return false;
+}
+
+// Walks a document without recursion, counting every value it meets (an alias once per use),
+// and finds the quoted scalar that starts last: the only one that can run unclosed to the end
+// of the file, since it would have swallowed any later one.
+class DocumentCheck {
+ public:
+  DocumentCheck(Diagnostics& diag, const std::string& text)
+      : diag_(diag), text_(text), budget_(aliasBudget(text.size())) {}
+
+  // Walks the document one top-level entry at a time, so that an expansion past the budget is
+  // reported at the key whose value holds it. Reports the first problem found.
+  void run(const YAML::Node& root) {
+    if (!root.IsMap()) {
+      if (walk(root, 1)) reportExpansion(root, "");
+    } else {
+      ++visits_;
+      for (const auto& kv : root) {
+        if (walk(kv.first, 2) || walk(kv.second, 2)) {
+          reportExpansion(kv.first, kv.first.IsScalar() ? kv.first.Scalar() + ": " : "");
+          return;
+        }
+        if (!diag_.empty()) return;
+      }
+    }
+    if (diag_.empty() && last_quote_ && !quoteCloses(text_, last_quote_->pos)) {
+      const std::string q(1, text_[last_quote_->pos]);
+      diag_.error(last_quote_->line + 1, "the string quoted with " + q +
+                                             " here is never closed (got the rest of the file as "
+                                             "its text, expected a closing " +
+                                             q + ")");
+    }
+  }
+
+ private:
+  struct Item {
+    YAML::Node node;  // copied in, never assigned (see MapEntry)
+    int level;        // of nested lists and maps, the top map being level 1
+  };
+
+  // True when the budget ran out; a nesting too deep is reported here.
+  bool walk(const YAML::Node& start, int level) {
+    std::vector<Item> stack;
+    stack.push_back({start, level});
+    while (!stack.empty()) {
+      const Item item = stack.back();
+      stack.pop_back();
+      if (++visits_ > budget_) return true;
+      const YAML::Node& n = item.node;
+      if (n.IsScalar()) noteQuote(n);
+      if (!n.IsSequence() && !n.IsMap()) continue;
+      if (item.level > kMaxNesting) {
+        diag_.error(n, kTooDeep);
+        return false;
+      }
+      for (const auto& child : n) {
+        if (n.IsMap()) {
+          stack.push_back({child.first, item.level + 1});
+          stack.push_back({child.second, item.level + 1});
+        } else {
+          stack.push_back({child, item.level + 1});
+        }
+      }
+    }
+    return false;
+  }
+
+  void noteQuote(const YAML::Node& scalar) {
+    const YAML::Mark mark = scalar.Mark();
+    if (mark.is_null() || mark.pos < 0 || static_cast<size_t>(mark.pos) >= text_.size()) return;
+    const char first = text_[mark.pos];
+    if ((first == '"' || first == '\'') && (!last_quote_ || mark.pos > last_quote_->pos))
+      last_quote_ = mark;
+  }
+
+  void reportExpansion(const YAML::Node& at, const std::string& prefix) {
+    diag_.error(at, prefix + "YAML aliases expand to more than " + std::to_string(budget_) +
+                        " values (an alias bomb?)");
+  }
+
+  Diagnostics& diag_;
+  const std::string& text_;
+  const size_t budget_;
+  size_t visits_ = 0;
+  std::optional<YAML::Mark> last_quote_;
+};
+
+std::optional<YAML::Node> parse(Diagnostics& diag, const std::string& text) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    diag.error(e.mark.line + 1, kTooDeep);
+  } catch (const YAML::ParserException& e) {
+    diag.error(e.mark.line + 1, "not valid YAML: " + e.msg);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+size_t aliasBudget(size_t bytes) { return 1000000 + 2 * bytes; }
+
+YAML::Node loadCaseDocument(Diagnostics& diag) {
+  const std::optional<std::string> text = readText(diag.file());
+  if (!text) diag.error(0, "cannot open the file");
+  diag.throwIfAny();
+  const std::optional<YAML::Node> root = parse(diag, *text);
+  if (root) DocumentCheck(diag, *text).run(*root);
+  diag.throwIfAny();
+  return *root;
+}
+
+}  // namespace flexmoor::app
