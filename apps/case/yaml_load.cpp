@@ -1,6 +1,7 @@
 #include "apps/case/yaml_load.hpp"
 
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
 
 #include <fstream>
 #include <optional>
@@ -39,13 +40,66 @@ bool quoteCloses(const std::string& text, size_t open) {
   return false;
 }
 
-// Walks a document without recursion, counting every value it meets (an alias once per use),
-// and finds the quoted scalar that starts last: the only one that can run unclosed to the end
-// of the file, since it would have swallowed any later one.
+// The quoted scalar that starts last, of those noted: the only one that can run unclosed to the
+// end of the file, since it would have swallowed any later one.
+class LastQuote {
+ public:
+  explicit LastQuote(const std::string& text) : text_(text) {}
+
+  // A scalar's mark; plain scalars do not start with a quote.
+  void note(const YAML::Mark& mark) {
+    if (mark.is_null() || mark.pos < 0 || static_cast<size_t>(mark.pos) >= text_.size()) return;
+    const char first = text_[mark.pos];
+    if ((first == '"' || first == '\'') && (!last_ || mark.pos > last_->pos)) last_ = mark;
+  }
+
+  // True (after reporting it) when the last quoted scalar is never closed.
+  bool reportUnclosed(Diagnostics& diag) const {
+    if (!last_ || quoteCloses(text_, last_->pos)) return false;
+    const std::string q(1, text_[last_->pos]);
+    diag.error(last_->line + 1, "the string quoted with " + q +
+                                    " here is never closed (got the rest of the file as its "
+                                    "text, expected a closing " +
+                                    q + ")");
+    return true;
+  }
+
+ private:
+  const std::string& text_;
+  std::optional<YAML::Mark> last_;
+};
+
+// The parser's events up to a syntax error, for the quoted scalars among them: an unclosed quote
+// in a flow list or map makes yaml-cpp fail at the end of the file with "end of map flow not
+// found", far from the cause.
+class QuotedScalars : public YAML::EventHandler {
+ public:
+  explicit QuotedScalars(LastQuote& last) : last_(last) {}
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    last_.note(mark);
+  }
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+
+ private:
+  LastQuote& last_;
+};
+
+// Walks a document without recursion, counting every value it meets (an alias once per use)
+// and noting its quoted scalars.
 class DocumentCheck {
  public:
   DocumentCheck(Diagnostics& diag, const std::string& text)
-      : diag_(diag), text_(text), budget_(aliasBudget(text.size())) {}
+      : diag_(diag), budget_(aliasBudget(text.size())), last_quote_(text) {}
 
   // Walks the document one top-level entry at a time, so that an expansion past the budget is
   // reported at the key whose value holds it. Reports the first problem found.
@@ -62,13 +116,7 @@ class DocumentCheck {
         if (!diag_.empty()) return;
       }
     }
-    if (diag_.empty() && last_quote_ && !quoteCloses(text_, last_quote_->pos)) {
-      const std::string q(1, text_[last_quote_->pos]);
-      diag_.error(last_quote_->line + 1, "the string quoted with " + q +
-                                             " here is never closed (got the rest of the file as "
-                                             "its text, expected a closing " +
-                                             q + ")");
-    }
+    if (diag_.empty()) last_quote_.reportUnclosed(diag_);
   }
 
  private:
@@ -86,7 +134,7 @@ class DocumentCheck {
       stack.pop_back();
       if (++visits_ > budget_) return true;
       const YAML::Node& n = item.node;
-      if (n.IsScalar()) noteQuote(n);
+      if (n.IsScalar()) last_quote_.note(n.Mark());
       if (!n.IsSequence() && !n.IsMap()) continue;
       if (item.level > kMaxNesting) {
         diag_.error(n, kTooDeep);
@@ -104,25 +152,28 @@ class DocumentCheck {
     return false;
   }
 
-  void noteQuote(const YAML::Node& scalar) {
-    const YAML::Mark mark = scalar.Mark();
-    if (mark.is_null() || mark.pos < 0 || static_cast<size_t>(mark.pos) >= text_.size()) return;
-    const char first = text_[mark.pos];
-    if ((first == '"' || first == '\'') && (!last_quote_ || mark.pos > last_quote_->pos))
-      last_quote_ = mark;
-  }
-
   void reportExpansion(const YAML::Node& at, const std::string& prefix) {
     diag_.error(at, prefix + "YAML aliases expand to more than " + std::to_string(budget_) +
                         " values (an alias bomb?)");
   }
 
   Diagnostics& diag_;
-  const std::string& text_;
   const size_t budget_;
   size_t visits_ = 0;
-  std::optional<YAML::Mark> last_quote_;
+  LastQuote last_quote_;
 };
+
+// True (after reporting it) when the text fails to parse at an unclosed quote.
+bool unclosedQuoteBefore(Diagnostics& diag, const std::string& text) {
+  LastQuote last(text);
+  QuotedScalars events(last);
+  std::istringstream in(text);
+  try {
+    YAML::Parser(in).HandleNextDocument(events);
+  } catch (const YAML::Exception&) {
+  }
+  return last.reportUnclosed(diag);
+}
 
 std::optional<YAML::Node> parse(Diagnostics& diag, const std::string& text) {
   try {
@@ -130,7 +181,7 @@ std::optional<YAML::Node> parse(Diagnostics& diag, const std::string& text) {
   } catch (const YAML::DeepRecursion& e) {
     diag.error(e.mark.line + 1, kTooDeep);
   } catch (const YAML::ParserException& e) {
-    diag.error(e.mark.line + 1, "not valid YAML: " + e.msg);
+    if (!unclosedQuoteBefore(diag, text)) diag.error(e.mark.line + 1, "not valid YAML: " + e.msg);
   }
   return std::nullopt;
 }

@@ -70,6 +70,18 @@ TEST(CaseReaderSyntax, UnclosedSingleQuoteIsReportedAtItsOpeningLine) {
       << m[0];
 }
 
+// In a flow map (the style of most cases) yaml-cpp failed at the end of the file instead, with
+// "end of map flow not found".
+TEST(CaseReaderSyntax, UnclosedQuoteInAFlowMapIsReportedAtItsOpeningLine) {
+  std::string text = kWire;
+  text.replace(text.find("{name: wire,"), 12, "{name: \"wire,");
+  const std::vector<std::string> m = problems(writeCase("flow.yaml", text));
+  ASSERT_EQ(m.size(), 1u) << joined(m);
+  EXPECT_NE(m[0].find("flow.yaml:7: the string quoted with \" here is never closed"),
+            std::string::npos)
+      << m[0];
+}
+
 // Closed quotes, escaped quotes, quotes over two lines and apostrophes in plain text are fine.
 TEST(CaseReaderSyntax, ClosedQuotesAreRead) {
   const Case a = readCase(writeCase("quotes.yaml", kWire + "title: \"say \\\"hi\\\" to\n  it\"\n"));
