@@ -127,29 +127,34 @@ class DocumentCheck {
 
   // True when the budget ran out; a nesting too deep is reported here.
   bool walk(const YAML::Node& start, int level) {
-    std::vector<Item> stack;
-    stack.push_back({start, level});
-    while (!stack.empty()) {
-      const Item item = stack.back();
-      stack.pop_back();
-      if (++visits_ > budget_) return true;
-      const YAML::Node& n = item.node;
-      if (n.IsScalar()) last_quote_.note(n.Mark());
-      if (!n.IsSequence() && !n.IsMap()) continue;
+    std::vector<Item> collections;  // met, not yet opened
+    if (!visit(start, level, collections)) return true;
+    while (!collections.empty()) {
+      const Item item = collections.back();
+      collections.pop_back();
       if (item.level > kMaxNesting) {
-        diag_.error(n, kTooDeep);
+        diag_.error(item.node, kTooDeep);
         return false;
       }
-      for (const auto& child : n) {
-        if (n.IsMap()) {
-          stack.push_back({child.first, item.level + 1});
-          stack.push_back({child.second, item.level + 1});
-        } else {
-          stack.push_back({child, item.level + 1});
-        }
+      const bool map = item.node.IsMap();
+      for (const auto& child : item.node) {
+        const bool within = map ? visit(child.first, item.level + 1, collections) &&
+                                      visit(child.second, item.level + 1, collections)
+                                : visit(child, item.level + 1, collections);
+        if (!within) return true;
       }
     }
     return false;
+  }
+
+  // Counts a value, notes a scalar, keeps a list or map to open; false past the budget.
+  bool visit(const YAML::Node& n, int level, std::vector<Item>& collections) {
+    if (++visits_ > budget_) return false;
+    if (n.IsScalar())
+      last_quote_.note(n.Mark());
+    else if (n.IsSequence() || n.IsMap())
+      collections.push_back({n, level});
+    return true;
   }
 
   void reportExpansion(const YAML::Node& at, const std::string& prefix) {
