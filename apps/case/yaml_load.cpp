@@ -15,12 +15,15 @@ namespace {
 const std::string kTooDeep = "lists and maps nested deeper than " + std::to_string(kMaxNesting) +
                              " levels (expected the few levels of a case file)";
 
+// The file's text without a UTF-8 byte-order mark, so that yaml-cpp's positions index it.
 std::optional<std::string> readText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  std::ostringstream s;
+  s << in.rdbuf();
+  std::string text = s.str();
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  return text;
 }
 
 // Whether the quoted string whose opening quote is text[open] is closed before the text ends

@@ -70,6 +70,18 @@ TEST(CaseReaderSyntax, UnclosedSingleQuoteIsReportedAtItsOpeningLine) {
       << m[0];
 }
 
+// yaml-cpp's positions do not count a UTF-8 byte-order mark; nor do those of the check.
+TEST(CaseReaderSyntax, UnclosedQuoteAfterAByteOrderMarkIsReported) {
+  const std::vector<std::string> m = problems(writeCase("bom.yaml",
+                                                        "\xEF\xBB\xBFunits: SI\ntitle: \"c\xC3\xA2"
+                                                        "ble\n" +
+                                                            kWire));
+  ASSERT_EQ(m.size(), 1u) << joined(m);
+  EXPECT_NE(m[0].find("bom.yaml:2: the string quoted with \" here is never closed"),
+            std::string::npos)
+      << m[0];
+}
+
 // In a flow map (the style of most cases) yaml-cpp failed at the end of the file instead, with
 // "end of map flow not found".
 TEST(CaseReaderSyntax, UnclosedQuoteInAFlowMapIsReportedAtItsOpeningLine) {
