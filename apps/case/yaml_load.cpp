@@ -72,29 +72,40 @@ class LastQuote {
   std::optional<YAML::Mark> last_;
 };
 
-// The parser's events up to a syntax error, for the quoted scalars among them: an unclosed quote
-// in a flow list or map makes yaml-cpp fail at the end of the file with "end of map flow not
-// found", far from the cause.
-class QuotedScalars : public YAML::EventHandler {
+// The parser's events up to a syntax error, replayed to find its cause: an unclosed quote in a
+// flow list or map makes yaml-cpp fail at the end of the file ("end of map flow not found"), and
+// its guard against deep nesting fails 500 levels down, not where the nesting passes the limit.
+class Replay : public YAML::EventHandler {
  public:
-  explicit QuotedScalars(LastQuote& last) : last_(last) {}
+  explicit Replay(const std::string& text) : quotes(text) {}
+
+  LastQuote quotes;
+  std::optional<YAML::Mark> too_deep;  // where a list or map first opens past kMaxNesting
+
   void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
                 const std::string&) override {
-    last_.note(mark);
+    quotes.note(mark);
   }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    open(mark);
+  }
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    open(mark);
+  }
+  void OnSequenceEnd() override { --level_; }
+  void OnMapEnd() override { --level_; }
   void OnDocumentStart(const YAML::Mark&) override {}
   void OnDocumentEnd() override {}
   void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
   void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
-  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                       YAML::EmitterStyle::value) override {}
-  void OnSequenceEnd() override {}
-  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                  YAML::EmitterStyle::value) override {}
-  void OnMapEnd() override {}
 
  private:
-  LastQuote& last_;
+  void open(const YAML::Mark& mark) {
+    if (++level_ > kMaxNesting && !too_deep) too_deep = mark;
+  }
+  int level_ = 0;
 };
 
 // Walks a document without recursion, counting every value it meets (an alias once per use)
@@ -171,25 +182,26 @@ class DocumentCheck {
   LastQuote last_quote_;
 };
 
-// True (after reporting it) when the text fails to parse at an unclosed quote.
-bool unclosedQuoteBefore(Diagnostics& diag, const std::string& text) {
-  LastQuote last(text);
-  QuotedScalars events(last);
+// The events of the text up to its syntax error.
+Replay replay(const std::string& text) {
+  Replay events(text);
   std::istringstream in(text);
   try {
     YAML::Parser(in).HandleNextDocument(events);
   } catch (const YAML::Exception&) {
   }
-  return last.reportUnclosed(diag);
+  return events;
 }
 
 std::optional<YAML::Node> parse(Diagnostics& diag, const std::string& text) {
   try {
     return YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
-    diag.error(e.mark.line + 1, kTooDeep);
+    const Replay events = replay(text);
+    diag.error(events.too_deep ? events.too_deep->line + 1 : e.mark.line + 1, kTooDeep);
   } catch (const YAML::ParserException& e) {
-    if (!unclosedQuoteBefore(diag, text)) diag.error(e.mark.line + 1, "not valid YAML: " + e.msg);
+    if (!replay(text).quotes.reportUnclosed(diag))
+      diag.error(e.mark.line + 1, "not valid YAML: " + e.msg);
   }
   return std::nullopt;
 }

@@ -142,6 +142,21 @@ TEST(CaseReaderSyntax, AliasBombIsRefusedAtTheBudget) {
   EXPECT_NE(m[0].find(expected), std::string::npos) << m[0];
 }
 
+// Block maps nested by indentation: the line is where the 257th level opens, whether the
+// reader's walk (300 levels) or yaml-cpp's guard at 500 (1,000 levels) stops the nesting.
+TEST(CaseReaderSyntax, NestingByIndentationIsRefusedWhereItPassesTheLimit) {
+  for (int levels : {300, 1000}) {
+    std::string text = "units: SI\n";
+    for (int i = 0; i < levels; ++i) text += std::string(i, ' ') + "k:\n";
+    const std::vector<std::string> m = problems(writeCase("indent.yaml", text));
+    ASSERT_EQ(m.size(), 1u) << joined(m);
+    // The top map opens on line 1; the map of level L on line L + 1.
+    EXPECT_NE(m[0].find("indent.yaml:258: lists and maps nested deeper than 256 levels"),
+              std::string::npos)
+        << levels << ": " << m[0];
+  }
+}
+
 // An alias inside its own anchor is a cycle: a reader walking it would never end. It nests
 // without end, so the nesting limit stops it, at the anchor's line.
 TEST(CaseReaderSyntax, SelfReferentialAliasIsRefused) {
