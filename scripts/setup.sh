@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 # membrane; docs/performance.md).
 packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgsl-dev
           libfftw3-dev libnetcdf-dev netcdf-bin libyaml-cpp-dev libgtest-dev libbenchmark-dev
-          libspectra-dev libpng-dev libopenblas0-serial ccache)
+          libspectra-dev libpng-dev libopenblas0-serial ccache libcli11-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

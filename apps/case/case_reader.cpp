@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/yaml_load.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -15,18 +16,6 @@ namespace fs = std::filesystem;
 const std::vector<std::string> kTopKeys = {
     "name",     "title",     "units",    "materials", "sections", "nodes", "lines",  "surfaces",
     "elements", "node_sets", "supports", "histories", "loads",    "steps", "summary"};
-
-YAML::Node loadYaml(Diagnostics& diag) {
-  try {
-    return YAML::LoadFile(diag.file());
-  } catch (const YAML::BadFile&) {
-    diag.error(0, "cannot open the file");
-  } catch (const YAML::ParserException& e) {
-    diag.error(e.mark.line + 1, "not valid YAML: " + e.msg);
-  }
-  diag.throwIfAny();
-  return {};
-}
 
 // The case's name: used for output files, so a plain word.
 std::string readName(Diagnostics& diag, Input& in, const Fields& top, const std::string& path) {
@@ -61,7 +50,7 @@ std::vector<fs::path> caseFiles() {
 
 Case readCase(const std::string& path) {
   Diagnostics diag(path);
-  const YAML::Node root = loadYaml(diag);
+  const YAML::Node root = loadCaseDocument(diag);
   Case c;
   c.file = path;
   c.model = std::make_unique<model::Model>();

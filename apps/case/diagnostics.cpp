@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace flexmoor::app {
 namespace {
@@ -42,6 +43,13 @@ int lineOf(const YAML::Node& node) {
   if (!node.IsDefined()) return 0;
   const YAML::Mark mark = node.Mark();
   return mark.is_null() ? 0 : mark.line + 1;
+}
+
+std::string formatNumber(double value) {
+  std::ostringstream s;
+  s.precision(10);  // the default float format is %g's
+  s << value;
+  return s.str();
 }
 
 }  // namespace flexmoor::app

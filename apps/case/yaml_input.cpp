@@ -120,21 +120,16 @@ std::string peekText(const YAML::Node& map, const char* key) {
 
 Fields::Fields(Diagnostics& diag, const YAML::Node& map, std::string path,
                std::vector<std::string> allowed)
-    : diag_(diag),
-      map_(map),
-      path_(std::move(path)),
-      entries_(mapEntries(diag, map, path_)),
-      is_map_(map.IsMap() || map.IsNull()) {
-  auto known = [&allowed](const MapEntry& e) {
-    return std::find(allowed.begin(), allowed.end(), e.key) != allowed.end();
-  };
-  for (const MapEntry& e : entries_)
-    if (!known(e))
+    : diag_(diag), map_(map), path_(std::move(path)), is_map_(map.IsMap() || map.IsNull()) {
+  // Kept entries are copied into a new list: erasing from a list of nodes would assign one
+  // YAML::Node over another, which rebinds the node in the document itself (MapEntry forbids it).
+  for (const MapEntry& e : mapEntries(diag, map, path_)) {
+    if (std::find(allowed.begin(), allowed.end(), e.key) != allowed.end())
+      entries_.push_back(e);
+    else
       diag_.error(e.key_node, prefix(path_) + "unknown key '" + e.key + "' (expected one of: " +
                                   joined(allowed) + suggestion(e.key, allowed) + ")");
-  entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
-                                [&known](const MapEntry& e) { return !known(e); }),
-                 entries_.end());
+  }
 }
 
 const YAML::Node* Fields::find(const std::string& key) const {

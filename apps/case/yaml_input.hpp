@@ -24,10 +24,17 @@ std::string itemPath(const std::string& path, size_t index);
 std::string describeNode(const YAML::Node& n);
 
 // One entry of a YAML map, with its key's node for the key's line.
+//
+// Never assign one YAML::Node over another: yaml-cpp's assignment does not rebind the handle but
+// makes the node it refers to, in the document itself, an alias of the other. A list of nodes may
+// be built (push_back) and read, but not erased from, sorted or swapped. MapEntry cannot be
+// assigned, so that std::remove_if and the like do not compile on its lists.
 struct MapEntry {
   std::string key;
   YAML::Node key_node;
   YAML::Node value;
+
+  MapEntry& operator=(const MapEntry&) = delete;
 };
 
 // The entries of a map in file order; a null value counts as an empty map. Reports a value that

@@ -1,110 +1,107 @@
 // The flexmoor command: run, check and list cases.
-#include <cstring>
+#include <CLI/CLI.hpp>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "apps/case/case_reader.hpp"
 #include "apps/case/diagnostics.hpp"
+#include "apps/cli/help_text.hpp"
 #include "apps/run/run_case.hpp"
 
 namespace {
 
-constexpr const char* kHelp =
-    R"(flexmoor - nonlinear finite-element analysis of cables, mooring lines and membranes
+using namespace flexmoor::app;
+namespace cli = flexmoor::cli;
 
-Usage:
-  flexmoor run CASE [-o DIR] [--no-vtk]   run a case; results go to DIR (default: results/)
-  flexmoor check CASE                    validate a case file without running it
-  flexmoor cases                         list the named cases shipped under cases/
-  flexmoor --help | --version
+// "flexmoor run: CASE is required" and where to look, for every usage error (exit 1).
+std::string usageFailure(const CLI::App* app, const CLI::Error& e) {
+  const std::vector<CLI::App*> chosen = app->get_subcommands();
+  const std::string command = chosen.empty() ? "flexmoor" : "flexmoor " + chosen[0]->get_name();
+  std::string what = e.what();
+  if (chosen.empty()) {  // CLI11 would say only "A subcommand is required"
+    const std::vector<std::string> rest = app->remaining();
+    what = "expected a command: run, check or cases" +
+           (rest.empty() ? std::string() : " (got '" + rest[0] + "')");
+  }
+  return command + ": " + what + "\nTry '" + command + " --help'.\n";
+}
 
-CASE is a path to a YAML case file or the name of a case under cases/ (for example
-ex1-suspended-cable-8xL2). A case states its unit system (US: ft, slug, s, lbf; SI: m, kg, s, N);
-any value may carry its own unit ("0.163 in", "500000 psi") and is converted once on reading.
+// The case named on the command line, read and checked; nullopt after reporting why not.
+std::optional<Case> readNamedCase(const std::string& name) {
+  try {
+    return readCase(resolveCasePath(name));
+  } catch (const CaseError& e) {
+    std::cerr << e.what() << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "flexmoor: " << e.what() << "\n";
+  }
+  return std::nullopt;
+}
 
-A run executes the case's steps in order, each from the state the previous one left:
-  relax   viscous relaxation (Appendix C) from an unstable, unstressed start to equilibrium
-  static  load increments with Newton-Raphson, modified Newton or BFGS (Eq. 5.1 convergence),
-          or arc-length control through limit points (control: arc_length)
-  modes   the lowest natural frequencies and mode shapes about the current, prestressed state
-  dynamic Newmark (Eq. 4.55-4.63) or HHT-alpha time steps with Newton iterations, by a
-          schedule of {dt, steps}; failed steps are halved and retried; progress is logged
-and writes
-  DIR/<case>.nc         netCDF-4, CF-style names with units: coordinates, displacements,
-                        velocities, reactions, tensions, membrane resultants and mode shapes,
-                        one record per step or per output time (flushed as it goes)
-  DIR/<case>-<n>.vtk    the deformed shape (and mode shapes) after step n, for ParaView
-  DIR/summary.json      the case's declared summary quantities with their units
+int check(const std::string& name) {
+  const std::optional<Case> c = readNamedCase(name);
+  if (!c) return kBadInput;
+  std::cout << c->file << ": valid (" << c->model->nodeCount() << " nodes, "
+            << c->model->elementCount() << " elements, " << c->model->equationCount()
+            << " equations, " << c->steps.size() << " steps)\n";
+  return kSuccess;
+}
 
-Exit codes: 0 done; 1 usage error; 2 the case file is invalid (every problem is listed as
-FILE:LINE: what is wrong); 3 a step did not converge (the last converged state is written);
-4 the run failed otherwise (an output could not be written, a value was not finite).
+int run(const std::string& name, const RunOptions& options) {
+  const std::optional<Case> c = readNamedCase(name);
+  if (!c) return kBadInput;
+  try {
+    return runCase(*c, options, std::cout).exit_code;
+  } catch (const std::exception& e) {
+    std::cerr << "flexmoor: " << e.what() << "\n";
+    return kRunFailed;
+  }
+}
 
-Examples:
-  flexmoor cases
-  flexmoor check cases/seed/ex1-suspended-cable-4xL3.yaml
-  flexmoor run ex1-suspended-cable-8xL2 -o results
-
-The case-file format (materials, sections, lines, surfaces, supports, loads, histories, steps,
-summary) is described in README.md, and every shipped case under cases/ is a worked example.
-)";
-
-int usage(const std::string& what) {
-  std::cerr << "flexmoor: " << what << "\nTry 'flexmoor --help'.\n";
-  return flexmoor::app::kUsage;
+int listNamedCases() {
+  for (const auto& [name, title] : listCases()) std::cout << name << "  " << title << "\n";
+  return kSuccess;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace flexmoor::app;
-  if (argc < 2) return usage("missing command");
-  const std::string command = argv[1];
-  if (command == "--help" || command == "-h" || command == "help") {
-    std::cout << kHelp;
-    return kSuccess;
-  }
-  if (command == "--version") {
-    std::cout << "flexmoor " << FLEXMOOR_VERSION << "\n";
-    return kSuccess;
-  }
-  if (command == "cases") {
-    for (const auto& [name, title] : listCases()) std::cout << name << "  " << title << "\n";
-    return kSuccess;
-  }
-  if (command != "run" && command != "check") return usage("unknown command '" + command + "'");
-  if (argc < 3) return usage(command + " needs a CASE");
+  CLI::App app(cli::kDescription, "flexmoor");
+  app.footer(cli::kOverview);
+  app.set_version_flag("--version", std::string("flexmoor ") + FLEXMOOR_VERSION);
+  app.require_subcommand(1);
+  app.failure_message(usageFailure);
 
-  RunOptions options;
-  for (int i = 3; i < argc; ++i) {
-    if ((!std::strcmp(argv[i], "-o") || !std::strcmp(argv[i], "--output")) && i + 1 < argc)
-      options.output_dir = argv[++i];
-    else if (!std::strcmp(argv[i], "--no-vtk"))
-      options.vtk = false;
-    else
-      return usage("unexpected argument '" + std::string(argv[i]) + "'");
-  }
+  std::string case_name;
+  RunOptions options;  // output_dir is set only by -o (runCase chooses the default)
+  bool no_vtk = false;
+  CLI::App* run_command = app.add_subcommand("run", cli::kRunSummary);
+  run_command->footer(cli::kRunDetails);
+  run_command->add_option("CASE", case_name, "a case file, or the name of a case under cases/")
+      ->required()
+      ->type_name("");
+  run_command->add_option("-o,--output", options.output_dir, "write the results into DIR")
+      ->type_name("DIR");
+  run_command->add_flag("--no-vtk", no_vtk, "do not write the .vtk files");
 
-  Case c;
+  CLI::App* check_command = app.add_subcommand("check", cli::kCheckSummary);
+  check_command->footer(cli::kCheckDetails);
+  check_command->add_option("CASE", case_name, "a case file, or the name of a case under cases/")
+      ->required()
+      ->type_name("");
+
+  CLI::App* cases_command = app.add_subcommand("cases", cli::kCasesSummary);
+  cases_command->footer(cli::kCasesDetails);
+
   try {
-    c = readCase(resolveCasePath(argv[2]));
-  } catch (const CaseError& e) {
-    std::cerr << e.what() << "\n";
-    return kBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "flexmoor: " << e.what() << "\n";
-    return kBadInput;
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kSuccess : kUsage;  // help and version exit 0
   }
-  if (command == "check") {
-    std::cout << c.file << ": valid (" << c.model->nodeCount() << " nodes, "
-              << c.model->elementCount() << " elements, " << c.model->equationCount()
-              << " equations, " << c.steps.size() << " steps)\n";
-    return kSuccess;
-  }
-  try {
-    return runCase(c, options, std::cout).exit_code;
-  } catch (const std::exception& e) {
-    std::cerr << "flexmoor: " << e.what() << "\n";
-    return kRunFailed;
-  }
+  options.vtk = !no_vtk;
+  if (check_command->parsed()) return check(case_name);
+  if (cases_command->parsed()) return listNamedCases();
+  return run(case_name, options);
 }

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "tests/support/cli_run.hpp"
 
@@ -49,11 +51,126 @@ INSTANTIATE_TEST_SUITE_P(Table1, Example1,
                                            Table1Row{"ex1-suspended-cable-2xL4", 57.84, 46.89}),
                          flexmoor::test::CaseParamName());
 
+// What `flexmoor ARGS` prints on stdout alone, stderr discarded: diagnoses must not be in it.
+std::string stdoutOf(const std::string& args) {
+  FILE* pipe = popen((std::string(FLEXMOOR_BINARY) + " " + args + " 2>/dev/null").c_str(), "r");
+  std::string out;
+  char buffer[4096];
+  while (fgets(buffer, sizeof buffer, pipe)) out += buffer;
+  pclose(pipe);
+  return out;
+}
+
+void expectAll(const CliRun& r, const std::vector<std::string>& parts) {
+  for (const std::string& part : parts)
+    EXPECT_NE(r.output.find(part), std::string::npos) << part << " in:\n" << r.output;
+}
+
 TEST(Cli, HelpTeachesTheCommands) {
   const CliRun r = flexmoor("--help");
   EXPECT_EQ(r.exit_code, 0);
-  for (const char* word : {"run", "check", "cases", "summary.json", "Exit codes"})
-    EXPECT_NE(r.output.find(word), std::string::npos) << word;
+  expectAll(r, {"run", "check", "cases", "named case", "units: US", "relax", "static", "modes",
+                "dynamic", "DIR/<case>.nc", "netCDF-4", "CF", "DIR/<case>-<n>.vtk",
+                "DIR/summary.json", "results/<case>/", "Exit codes", "Examples", "COMMAND --help"});
+}
+
+// Issue 9: `run --help` said "no case file or named case '--help'". Every command has its help.
+TEST(Cli, EveryCommandHasItsOwnHelp) {
+  const CliRun run = flexmoor("run --help");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  expectAll(run, {"Usage: flexmoor run [OPTIONS] CASE", "-o,--output DIR", "--no-vtk",
+                  "Loads and load factors from step to step", "load_factor", "results/<case>/",
+                  "DIR/<case>.nc", "Exit codes", "Examples"});
+  EXPECT_EQ(run.output.find("no case file"), std::string::npos) << run.output;
+
+  const CliRun check = flexmoor("check --help");
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+  expectAll(check, {"Usage: flexmoor check [OPTIONS] CASE", "FILE:LINE", "Exit codes"});
+
+  const CliRun cases = flexmoor("cases --help");
+  EXPECT_EQ(cases.exit_code, 0) << cases.output;
+  expectAll(cases, {"Usage: flexmoor cases", "title"});
+
+  const CliRun version = flexmoor("--version");
+  EXPECT_EQ(version.exit_code, 0) << version.output;
+  EXPECT_EQ(version.output, std::string("flexmoor ") + FLEXMOOR_VERSION + "\n");
+}
+
+// Issue 9: `run -o DIR CASE` was refused. Options go anywhere after the command.
+TEST(Cli, RunTakesItsOptionsBeforeOrAfterTheCase) {
+  const fs::path before = scratch("options-before");
+  const CliRun a = flexmoor("run -o " + before.string() + " --no-vtk ex1-suspended-cable-8xL2");
+  EXPECT_EQ(a.exit_code, 0) << a.output;
+  EXPECT_TRUE(fs::exists(before / "summary.json")) << a.output;
+  EXPECT_TRUE(fs::exists(before / "ex1-suspended-cable-8xL2.nc")) << a.output;
+  EXPECT_FALSE(fs::exists(before / "ex1-suspended-cable-8xL2-1.vtk")) << "--no-vtk";
+
+  const fs::path after = scratch("options-after");
+  const CliRun b = flexmoor("run ex1-suspended-cable-8xL2 --output " + after.string());
+  EXPECT_EQ(b.exit_code, 0) << b.output;
+  EXPECT_TRUE(fs::exists(after / "ex1-suspended-cable-8xL2-1.vtk")) << b.output;
+}
+
+// Issue 9: `cases extra` was accepted. A missing, extra or unknown argument is a usage error
+// (exit 1) that names it, on stderr, and runs nothing.
+TEST(Cli, UsageErrorsNameTheArgumentAndExitWith1) {
+  const fs::path dir = scratch("usage");
+  const struct {
+    std::string args, message;
+  } errors[] = {
+      {"", "flexmoor: expected a command: run, check or cases"},
+      {"frob", "flexmoor: expected a command: run, check or cases (got 'frob')"},
+      {"cases extra", "flexmoor cases: The following argument was not expected: extra"},
+      {"check", "flexmoor check: CASE is required"},
+      {"check ex1-suspended-cable-8xL2 extra",
+       "flexmoor check: The following argument was not expected: extra"},
+      {"run", "flexmoor run: CASE is required"},
+      {"run ex1-suspended-cable-8xL2 ex1-suspended-cable-4xL3 -o " + dir.string(),
+       "flexmoor run: The following argument was not expected: ex1-suspended-cable-4xL3"},
+      {"run ex1-suspended-cable-8xL2 --frob -o " + dir.string(),
+       "flexmoor run: The following argument was not expected: --frob"},
+      {"run ex1-suspended-cable-8xL2 -o", "flexmoor run: --output: 1 required DIR missing"},
+  };
+  for (const auto& e : errors) {
+    const CliRun r = flexmoor(e.args);
+    EXPECT_EQ(r.exit_code, 1) << e.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(e.message), std::string::npos) << e.args << "\n" << r.output;
+    EXPECT_NE(r.output.find("--help'."), std::string::npos) << e.args << "\n" << r.output;
+    EXPECT_EQ(stdoutOf(e.args), "") << e.args;
+  }
+  EXPECT_TRUE(fs::is_empty(dir)) << "a usage error runs nothing";
+}
+
+// Issue 9: a 1 KB file of nested aliases kept `check` busy for minutes. It is refused at the
+// expansion budget, on stderr, naming the line; the test only asks that it finishes. Here h is
+// 10^8 scalars; a..e hold 123,460 values with their keys and lists, f alone 1,111,111, which
+// passes the budget of 1,000,000 plus two per character.
+TEST(Cli, AliasBombIsRefusedOnStderrAndRunsNothing) {
+  const fs::path dir = scratch("bomb");
+  const fs::path file = dir / "bomb.yaml";
+  std::ofstream(file) << "units: SI\n"
+                         "a: &a [lol, lol, lol, lol, lol, lol, lol, lol, lol, lol]\n"
+                         "b: &b [*a, *a, *a, *a, *a, *a, *a, *a, *a, *a]\n"
+                         "c: &c [*b, *b, *b, *b, *b, *b, *b, *b, *b, *b]\n"
+                         "d: &d [*c, *c, *c, *c, *c, *c, *c, *c, *c, *c]\n"
+                         "e: &e [*d, *d, *d, *d, *d, *d, *d, *d, *d, *d]\n"
+                         "f: &f [*e, *e, *e, *e, *e, *e, *e, *e, *e, *e]\n"
+                         "g: &g [*f, *f, *f, *f, *f, *f, *f, *f, *f, *f]\n"
+                         "h: &h [*g, *g, *g, *g, *g, *g, *g, *g, *g, *g]\n"
+                         "supports: [{nodes: *h, fix: [x]}]\n"
+                         "steps: [{static: {}}]\n";
+  for (const std::string& args :
+       {"check " + file.string(), "run " + file.string() + " -o " + dir.string()}) {
+    const CliRun r = flexmoor(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find("bomb.yaml:7: f: YAML aliases expand to more than 100"),
+              std::string::npos)
+        << args << "\n"
+        << r.output;
+    EXPECT_EQ(stdoutOf(args), "") << args;
+  }
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1)
+      << "only the case file itself";
 }
 
 // Every case file shipped under cases/ is listed by `flexmoor cases` and passes `flexmoor check`

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "apps/case/diagnostics.hpp"
+#include "apps/case/yaml_input.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "tests/support/case_files.hpp"
 
@@ -237,6 +238,58 @@ TEST(CaseReader, UnknownKeyIsReportedWithTheAllowedKeys) {
             std::string::npos)
       << m[0];
   EXPECT_NE(m[0].find("did you mean 'elements'?"), std::string::npos) << m[0];
+}
+
+// Issue 9: an unknown key that was not the last of its map shifted every later key onto its
+// successor's value (std::remove_if assigned YAML::Node over YAML::Node, which rebinds the node
+// in the document): one typo gave a cascade of bogus errors. One mistake, one message.
+TEST(CaseReader, MisspelledFirstKeyOfAMapIsTheOnlyProblem) {
+  std::string text = kExampleOne;
+  text.replace(text.find("relax: {tolerance:"), 18, "relax: {tolerence:");
+  const std::vector<std::string> m = problems(writeCase("first.yaml", text));
+  ASSERT_EQ(m.size(), 1u) << joined(m);
+  EXPECT_NE(m[0].find("first.yaml:20: steps[1].relax: unknown key 'tolerence'"), std::string::npos)
+      << m[0];
+  EXPECT_NE(m[0].find("did you mean 'tolerance'?"), std::string::npos) << m[0];
+}
+
+TEST(CaseReader, MisspelledMiddleKeyOfAMapIsTheOnlyProblem) {
+  std::string text = kExampleOne;
+  text.replace(text.find(" damping: 10000"), 15, " dampng: 10000");
+  const std::vector<std::string> m = problems(writeCase("middle.yaml", text));
+  ASSERT_EQ(m.size(), 1u) << joined(m);
+  EXPECT_NE(m[0].find("middle.yaml:20: steps[1].relax: unknown key 'dampng'"), std::string::npos)
+      << m[0];
+}
+
+// The same through Fields itself: every known key after an unknown one keeps its own value, and
+// the document is left as it was read.
+TEST(CaseReader, KeysAfterAnUnknownOneKeepTheirOwnValues) {
+  for (const char* text : {"{typo: 0, a: 1, b: 2, c: 3}", "{a: 1, typo: 0, b: 2, c: 3}",
+                           "{a: 1, b: 2, typo: 0, c: 3}"}) {
+    const YAML::Node map = YAML::Load(text);
+    Diagnostics diag("fields.yaml");
+    const Fields f(diag, map, "m", {"a", "b", "c"});
+    EXPECT_EQ(diag.messages().size(), 1u) << text;
+    int expected = 1;
+    for (const char* key : {"a", "b", "c"}) {
+      ASSERT_NE(f.find(key), nullptr) << text << " " << key;
+      EXPECT_EQ(f.find(key)->Scalar(), std::to_string(expected)) << text << " " << key;
+      EXPECT_EQ(map[key].Scalar(), std::to_string(expected)) << text << " " << key;
+      ++expected;
+    }
+    EXPECT_EQ(map["typo"].Scalar(), "0") << text;
+  }
+}
+
+// Numbers in messages: %g style (reference: printf's %.10g), never %f's fixed decimals.
+TEST(Diagnostics, NumbersInMessagesAreInGStyle) {
+  EXPECT_EQ(formatNumber(1e13), "1e+13");
+  EXPECT_EQ(formatNumber(0.0), "0");
+  EXPECT_EQ(formatNumber(0.1 + 0.2), "0.3");
+  EXPECT_EQ(formatNumber(-32.2), "-32.2");
+  EXPECT_EQ(formatNumber(1.0000001), "1.0000001");
+  EXPECT_EQ(formatNumber(2.5e-9), "2.5e-09");
 }
 
 TEST(CaseReader, RepeatedKeyIsReported) {

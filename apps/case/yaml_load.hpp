@@ -1,0 +1,29 @@
+#pragma once
+// Loads the YAML document of a case file so that no text can crash or hang the reader, and says
+// plainly what yaml-cpp lets through or words poorly:
+//   - a quoted string that is never closed (yaml-cpp reads it to the end of the file);
+//   - lists and maps nested deeper than kMaxNesting levels (yaml-cpp's parser recurses and gives
+//     up at 500 as "bad file");
+//   - aliases that expand to more values than aliasBudget (a "billion laughs" file: an alias is
+//     the anchored node itself, so a reader walking the document visits it once per use).
+// Each is reported with its line to the Diagnostics, which then throw; nothing else is read.
+#include <yaml-cpp/yaml.h>
+
+#include <cstddef>
+
+#include "apps/case/diagnostics.hpp"
+
+namespace flexmoor::app {
+
+// Levels of nested lists and maps, the document's top map included; a case needs about six.
+constexpr int kMaxNesting = 256;
+
+// The most values (scalars, lists and maps, each use of an alias counted in full) that a file of
+// `bytes` characters may expand to: a million, for reasonable reuse of anchors, plus two per
+// character (a file without aliases holds at most about one value per character).
+size_t aliasBudget(size_t bytes);
+
+// The document of diag.file(); throws CaseError (after reporting to diag) when it cannot be read.
+YAML::Node loadCaseDocument(Diagnostics& diag);
+
+}  // namespace flexmoor::app

@@ -1,0 +1,113 @@
+#pragma once
+// What `flexmoor --help` and `flexmoor COMMAND --help` teach, beyond the options that the
+// argument parser lists itself.
+
+namespace flexmoor::cli {
+
+inline constexpr const char* kDescription =
+    "flexmoor - nonlinear finite-element analysis of cables, mooring lines and membranes";
+
+inline constexpr const char* kOverview = R"(
+A case is one YAML file that states a whole problem: its unit system, materials and sections,
+the mesh (lines, surfaces, nodes, elements), supports, loads and load histories, the analysis
+steps to run in order and the summary quantities to report. CASE is the path of such a file or
+the name of a case shipped under cases/: its file name without .yaml, for example
+ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles).
+
+Units: a case states `units: US` (ft, slug, s; forces in lbf) or `units: SI` (m, kg, s; N).
+Any value may carry its own unit ("0.163 in", "500000 psi", "9.81 m/s^2") and is
+converted once, on reading, into the case's system.
+
+Steps run in order, each from the state the previous one left:
+  relax    viscous relaxation (Appendix C) from an unstressed start to equilibrium
+  static   load increments by Newton-Raphson, modified Newton or BFGS, or arc length
+  modes    natural frequencies and mode shapes about the current, prestressed state
+  dynamic  Newmark or HHT-alpha time steps with Newton iterations
+
+'flexmoor run' writes into DIR (-o DIR; default results/<case>/):
+  DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions: time, node and element
+                       coordinates, displacements, velocities, reactions, tensions, membrane
+                       resultants and mode shapes, with units; one record per step or per
+                       output time, flushed as it goes
+  DIR/<case>-<n>.vtk   the deformed shape (and mode shapes) after step n, for ParaView
+  DIR/summary.json     the case's summary quantities with their units
+
+Exit codes:
+  0  done (for check: the case is valid)
+  1  usage error (an unknown command or option, a missing or extra argument)
+  2  the case is invalid: every problem is listed on stderr as FILE:LINE: what is wrong
+  3  a step did not converge: the last converged state is written, the diagnosis is on stderr
+  4  the run failed otherwise (an output could not be written, a value was not finite)
+
+Examples:
+  flexmoor cases
+  flexmoor check cases/seed/ex1-suspended-cable-4xL3.yaml
+  flexmoor run ex1-suspended-cable-8xL2          results in results/ex1-suspended-cable-8xL2/
+  flexmoor run -o /tmp/ex1 ex1-suspended-cable-8xL2 --no-vtk
+
+'flexmoor COMMAND --help' tells more about one command. The case-file format is described in
+README.md, and every case under cases/ is a worked example.
+)";
+
+inline constexpr const char* kRunSummary = "run a case and write its results";
+
+inline constexpr const char* kRunDetails =
+    R"(
+Reads and checks CASE as 'flexmoor check' does (an invalid case runs nothing and exits 2), then
+runs its steps in order, each from the state the previous one left:
+  relax    viscous relaxation (Appendix C) carries an unstable, unstressed start to equilibrium
+  static   load increments up to the step's load_factor, by Newton-Raphson, modified Newton or
+           BFGS (Eq. 5.1 convergence), or arc length through limit points (control: arc_length)
+  modes    the lowest natural frequencies and mode shapes about the current, prestressed state
+  dynamic  Newmark (Eq. 4.55-4.63) or HHT-alpha time steps with Newton iterations, on a
+           schedule of {dt, steps}; a step that fails is halved and retried; progress is logged
+)"
+    // Slot: how loads and load factors pass from step to step (the solvers' rule, issue 9).
+    R"(
+Loads and load factors from step to step:
+  Loads without a history (gravity, nodal loads, pressure, prescribed displacements) are
+  scaled by the load factor. A static step ramps the factor to its `load_factor` (default 1)
+  over its increments; relax runs at its load_factor (default 1); a dynamic step holds the
+  factor the previous step left, or 1 when it is the first step; loads with a history follow
+  history(t) in dynamic steps.
+)"
+    R"(
+Outputs, in DIR (default results/<case>/):
+  DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions, one record per step or per
+                       output time, flushed as it goes
+  DIR/<case>-<n>.vtk   the deformed shape (and mode shapes) after step n (not with --no-vtk)
+  DIR/summary.json     the case's summary quantities with their units
+
+Exit codes: 0 done; 1 usage error; 2 the case is invalid (every problem on stderr as
+FILE:LINE: what is wrong); 3 a step did not converge (the last converged state is written,
+the diagnosis is on stderr); 4 the run failed otherwise.
+
+Examples:
+  flexmoor run ex1-suspended-cable-8xL2
+  flexmoor run -o /tmp/ex1 cases/seed/ex1-suspended-cable-8xL2.yaml --no-vtk
+)";
+
+inline constexpr const char* kCheckSummary = "check a case file without running it";
+
+inline constexpr const char* kCheckDetails = R"(
+Reads CASE and checks everything that can be known without solving: YAML syntax, keys and
+their types, units and dimensions, value ranges, references to materials, sections, nodes,
+lines, surfaces and histories, the geometry of the elements, and the steps and summary.
+A valid case prints one line (its nodes, elements, equations and steps) on stdout.
+
+Exit codes: 0 the case is valid; 1 usage error; 2 the case is invalid: every problem is listed
+on stderr, one a line, as FILE:LINE: what is wrong (got X, expected Y).
+
+Examples:
+  flexmoor check ex1-suspended-cable-8xL2
+  flexmoor check my-mooring.yaml
+)";
+
+inline constexpr const char* kCasesSummary = "list the named cases shipped under cases/";
+
+inline constexpr const char* kCasesDetails = R"(
+Prints one line per case under cases/: the name that 'flexmoor run NAME' and 'flexmoor check
+NAME' accept, then its title. Takes no arguments.
+)";
+
+}  // namespace flexmoor::cli
