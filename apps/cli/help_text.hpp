@@ -31,6 +31,7 @@ Steps run in order, each from the state the previous one left:
                        output time, flushed as it goes
   DIR/<case>-<n>.vtk   the deformed shape (and mode shapes) after step n, for ParaView
   DIR/summary.json     the case's summary quantities with their units
+'flexmoor plot' draws time series of a result as a PNG figure.
 
 Exit codes:
   0  done (for check: the case is valid)
@@ -108,6 +109,24 @@ inline constexpr const char* kCasesSummary = "list the named cases shipped under
 inline constexpr const char* kCasesDetails = R"(
 Prints one line per case under cases/: the name that 'flexmoor run NAME' and 'flexmoor check
 NAME' accept, then its title. Takes no arguments.
+)";
+
+inline constexpr const char* kPlotSummary = "draw time series of a result as a PNG figure";
+
+inline constexpr const char* kPlotDetails = R"(
+Draws one panel per --series from RESULT (a DIR/<case>.nc written by 'flexmoor run'), with the
+file's units, a legend and the case's title, using Debian's matplotlib (/usr/bin/python3).
+SPEC is VARIABLE@INDEX with 1-based indices as in the file's coordinates:
+  position_x@node=5            x of node 5 in the current configuration
+  speed@node=5                 |velocity| of node 5
+  tension_end@element=1,end=1  axial force at the first end of element 1 (end=2: the last)
+  load_factor                  a variable of the record alone
+Without --series: the largest end tension over the elements and the displacement of the node
+that moves most. Records of static steps, which share one time, are drawn as points.
+
+Examples:
+  flexmoor plot results/driven-taut-cable/driven-taut-cable.nc -o cable.png
+  flexmoor plot RESULT.nc -o tension.png --series tension_end@element=1,end=1 --series speed@node=5
 )";
 
 }  // namespace flexmoor::cli

@@ -1,5 +1,9 @@
-// The flexmoor command: run, check and list cases.
+// The flexmoor command: run, check and list cases, plot results.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -22,7 +26,7 @@ std::string usageFailure(const CLI::App* app, const CLI::Error& e) {
   std::string what = e.what();
   if (chosen.empty()) {  // CLI11 would say only "A subcommand is required"
     const std::vector<std::string> rest = app->remaining();
-    what = "expected a command: run, check or cases" +
+    what = "expected a command: run, check, cases or plot" +
            (rest.empty() ? std::string() : " (got '" + rest[0] + "')");
   }
   return command + ": " + what + "\nTry '" + command + " --help'.\n";
@@ -60,6 +64,22 @@ int run(const std::string& name, const RunOptions& options) {
   }
 }
 
+// Hands over to apps/plot/flexmoor_plot.py under Debian's interpreter (its matplotlib and
+// xarray belong to it); returns only when the interpreter cannot be started.
+int plot(const std::string& result, const std::string& png, const std::vector<std::string>& series,
+         const std::string& title) {
+  std::vector<std::string> args = {"/usr/bin/python3", FLEXMOOR_PLOT_SCRIPT, result, "-o", png};
+  for (const std::string& s : series) args.insert(args.end(), {"--series", s});
+  if (!title.empty()) args.insert(args.end(), {"--title", title});
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  execv(argv[0], argv.data());
+  std::cerr << "flexmoor plot: cannot start /usr/bin/python3 (" << std::strerror(errno)
+            << "); it needs Debian's python3-matplotlib and python3-xarray\n";
+  return kRunFailed;
+}
+
 int listNamedCases() {
   for (const auto& [name, title] : listCases()) std::cout << name << "  " << title << "\n";
   return kSuccess;
@@ -95,6 +115,21 @@ int main(int argc, char** argv) {
   CLI::App* cases_command = app.add_subcommand("cases", cli::kCasesSummary);
   cases_command->footer(cli::kCasesDetails);
 
+  std::string result, png, title;
+  std::vector<std::string> series;
+  CLI::App* plot_command = app.add_subcommand("plot", cli::kPlotSummary);
+  plot_command->footer(cli::kPlotDetails);
+  plot_command->add_option("RESULT", result, "a netCDF result of 'flexmoor run'")
+      ->required()
+      ->type_name("");
+  plot_command->add_option("-o,--output", png, "the PNG to write")->required()->type_name("PNG");
+  plot_command->add_option("--series", series, "VARIABLE@INDEX, one panel each (repeatable)")
+      ->type_name("SPEC")
+      ->take_all()
+      ->allow_extra_args(false);
+  plot_command->add_option("--title", title, "the figure's title (default: the case's)")
+      ->type_name("TEXT");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -103,5 +138,6 @@ int main(int argc, char** argv) {
   options.vtk = !no_vtk;
   if (check_command->parsed()) return check(case_name);
   if (cases_command->parsed()) return listNamedCases();
+  if (plot_command->parsed()) return plot(result, png, series, title);
   return run(case_name, options);
 }

@@ -1,5 +1,6 @@
-// Figures a person reads: apps/plot/flexmoor_plot.py (matplotlib from Debian, the system
-// interpreter) draws time series of a run's netCDF as a PNG, and refuses a series it cannot find.
+// Figures a person reads: `flexmoor plot` (apps/plot/flexmoor_plot.py with Debian's matplotlib
+// under the system interpreter) draws time series of a run's netCDF as a PNG, and refuses a
+// series it cannot find.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -12,22 +13,7 @@ namespace {
 
 using flexmoor::test::flexmoor;
 
-struct Command {
-  int exit_code;
-  std::string output;
-};
-
-Command plot(const std::string& args) {
-  const std::string command = "/usr/bin/python3 " + std::string(FLEXMOOR_SOURCE_DIR) +
-                              "/apps/plot/flexmoor_plot.py " + args + " 2>&1";
-  Command c{0, ""};
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (fgets(buffer, sizeof buffer, pipe)) c.output += buffer;
-  const int status = pclose(pipe);
-  c.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return c;
-}
+flexmoor::test::CliRun plot(const std::string& args) { return flexmoor("plot " + args); }
 
 // Width and height from a PNG's IHDR chunk (big-endian at bytes 16..23), 0 if not a PNG.
 std::pair<uint32_t, uint32_t> pngSize(const std::string& path) {
@@ -48,15 +34,15 @@ TEST(Plot, DrawsChosenSeriesOfARunAsAPng) {
   ASSERT_EQ(flexmoor("run driven-taut-cable -o " + dir.string()).exit_code, 0);
   const std::string nc = (dir / "driven-taut-cable.nc").string();
   const std::string png = (dir / "series.png").string();
-  const Command c = plot(nc + " -o " + png +
-                         " --series displacement_z@node=5 --series speed@node=5"
-                         " --series tension_end@element=4,end=2");
+  const auto c = plot(nc + " -o " + png +
+                      " --series displacement_z@node=5 --series speed@node=5"
+                      " --series tension_end@element=4,end=2");
   ASSERT_EQ(c.exit_code, 0) << c.output;
   EXPECT_NE(c.output.find("3 panels"), std::string::npos) << c.output;
   const auto [width, height] = pngSize(png);
   EXPECT_GT(width, 800u);   // 8 in at 130 dpi
   EXPECT_GT(height, 900u);  // three panels
-  const Command defaults = plot(nc + " -o " + (dir / "default.png").string());
+  const auto defaults = plot(nc + " -o " + (dir / "default.png").string());
   ASSERT_EQ(defaults.exit_code, 0) << defaults.output;
   EXPECT_GT(pngSize((dir / "default.png").string()).first, 0u);
 }
@@ -65,10 +51,10 @@ TEST(Plot, RefusesASeriesTheFileDoesNotHold) {
   const auto dir = flexmoor::test::scratch("plot-bad");
   ASSERT_EQ(flexmoor("run driven-taut-cable -o " + dir.string()).exit_code, 0);
   const std::string nc = (dir / "driven-taut-cable.nc").string();
-  const Command missing = plot(nc + " -o " + (dir / "x.png").string() + " --series buoy_x@node=1");
+  const auto missing = plot(nc + " -o " + (dir / "x.png").string() + " --series buoy_x@node=1");
   EXPECT_NE(missing.exit_code, 0);
   EXPECT_NE(missing.output.find("no variable 'buoy_x'"), std::string::npos) << missing.output;
-  const Command unindexed = plot(nc + " -o " + (dir / "y.png").string() + " --series position_x");
+  const auto unindexed = plot(nc + " -o " + (dir / "y.png").string() + " --series position_x");
   EXPECT_NE(unindexed.exit_code, 0);
   EXPECT_NE(unindexed.output.find("needs an index for node"), std::string::npos)
       << unindexed.output;
