@@ -9,8 +9,10 @@
 
 namespace flexmoor::app {
 
-constexpr size_t kChunkBytes = size_t{256} * 1024;
-constexpr size_t kMaxRecords = 4096;
+// 128 KiB: fast to write and to flush (a flush writes each variable's partly filled chunk),
+// while a file of a few records (a static case) stays a couple of MiB.
+constexpr size_t kChunkBytes = size_t{128} * 1024;
+constexpr size_t kMaxRecords = 2048;
 
 // Chunk lengths (records first, then one per dimension of `extents`) for a record variable
 // whose other dimensions have the lengths `extents` (0 counts as 1, for a second unlimited

@@ -44,25 +44,25 @@ std::vector<size_t> chunking(int file, const char* name, int& storage) {
   return chunks;
 }
 
-// Reference: the rule of record_chunks.hpp, worked by hand for kChunkBytes = 256 KiB and
-// kMaxRecords = 4096. Exact integers.
+// Reference: the rule of record_chunks.hpp, worked by hand for kChunkBytes = 128 KiB and
+// kMaxRecords = 2048. Exact integers.
 TEST(RecordChunks, ManyRecordsPerChunkAndTheWholeOfSmallDimensions) {
-  ASSERT_EQ(kChunkBytes, 262144u);
-  ASSERT_EQ(kMaxRecords, 4096u);
+  ASSERT_EQ(kChunkBytes, 131072u);
+  ASSERT_EQ(kMaxRecords, 2048u);
   // A scalar per record (time): capped at kMaxRecords.
-  EXPECT_EQ(recordChunks({}, 8), (std::vector<size_t>{4096}));
-  // 151 nodes of doubles, 1,208 bytes a record: floor(262144 / 1208) = 217 records.
-  EXPECT_EQ(recordChunks({151}, 8), (std::vector<size_t>{217, 151}));
-  // (element, end) of 150 elements: 2,400 bytes a record, 109 records.
-  EXPECT_EQ(recordChunks({150, 2}, 8), (std::vector<size_t>{109, 150, 2}));
-  // A record larger than a chunk: 100,000 nodes (800,000 bytes) split to 32,768 a chunk.
-  EXPECT_EQ(recordChunks({100000}, 8), (std::vector<size_t>{1, 32768}));
-  // (mode, node) 10 x 100,000: one mode of 32,768 nodes a chunk (the outermost split first).
-  EXPECT_EQ(recordChunks({10, 100000}, 8), (std::vector<size_t>{1, 1, 32768}));
-  // (mode, node) 10 x 5,000 (400,000 bytes): 6 modes of 40,000 bytes fit in 256 KiB.
-  EXPECT_EQ(recordChunks({10, 5000}, 8), (std::vector<size_t>{1, 6, 5000}));
+  EXPECT_EQ(recordChunks({}, 8), (std::vector<size_t>{2048}));
+  // 151 nodes of doubles, 1,208 bytes a record: floor(131072 / 1208) = 108 records.
+  EXPECT_EQ(recordChunks({151}, 8), (std::vector<size_t>{108, 151}));
+  // (element, end) of 150 elements: 2,400 bytes a record, 54 records.
+  EXPECT_EQ(recordChunks({150, 2}, 8), (std::vector<size_t>{54, 150, 2}));
+  // A record larger than a chunk: 100,000 nodes (800,000 bytes) split to 16,384 a chunk.
+  EXPECT_EQ(recordChunks({100000}, 8), (std::vector<size_t>{1, 16384}));
+  // (mode, node) 10 x 100,000: one mode of 16,384 nodes a chunk (the outermost split first).
+  EXPECT_EQ(recordChunks({10, 100000}, 8), (std::vector<size_t>{1, 1, 16384}));
+  // (mode, node) 10 x 5,000 (400,000 bytes): 3 modes of 40,000 bytes fit in 128 KiB.
+  EXPECT_EQ(recordChunks({10, 5000}, 8), (std::vector<size_t>{1, 3, 5000}));
   // A second unlimited dimension (length 0 so far) counts as 1.
-  EXPECT_EQ(recordChunks({0}, 8), (std::vector<size_t>{4096, 1}));
+  EXPECT_EQ(recordChunks({0}, 8), (std::vector<size_t>{2048, 1}));
 }
 
 // The default of netCDF is one record per chunk for (step, node); the file must carry the
@@ -79,9 +79,9 @@ TEST_F(NetcdfFileTest, RecordVariablesAreChunkedForLongSeries) {
   }
   int id = -1, storage = -1;
   ASSERT_EQ(nc_open(path_.c_str(), NC_NOWRITE, &id), NC_NOERR);
-  EXPECT_EQ(chunking(id, "time", storage), (std::vector<size_t>{4096}));
+  EXPECT_EQ(chunking(id, "time", storage), (std::vector<size_t>{2048}));
   EXPECT_EQ(storage, NC_CHUNKED);
-  EXPECT_EQ(chunking(id, "displacement_x", storage), (std::vector<size_t>{217, 151}));
+  EXPECT_EQ(chunking(id, "displacement_x", storage), (std::vector<size_t>{108, 151}));
   EXPECT_EQ(storage, NC_CHUNKED);
   chunking(id, "node_x", storage);
   EXPECT_EQ(storage, NC_CONTIGUOUS);
@@ -90,7 +90,7 @@ TEST_F(NetcdfFileTest, RecordVariablesAreChunkedForLongSeries) {
 
 // Records go through the record buffer (held, then written a chunk of records at a time); a
 // write that is not a whole record comes after everything held before it. Reference: the values
-// put, exactly; 10,000 records cross two chunk boundaries of `time` (4,096 records a chunk).
+// put, exactly; 10,000 records cross four chunk boundaries of `time` (2,048 records a chunk).
 TEST_F(NetcdfFileTest, BufferedRecordsReachTheFileWholeAndInOrder) {
   const size_t records = 10000;
   {
