@@ -1,14 +1,30 @@
 #include "apps/output/netcdf_file.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+
+#include "apps/output/atomic_output.hpp"
+#include "apps/output/record_chunks.hpp"
 
 namespace flexmoor::app {
 
-NetcdfFile::NetcdfFile(std::string path) : path_(std::move(path)) {
-  check(nc_create(path_.c_str(), NC_NETCDF4 | NC_CLOBBER, &id_), "cannot create the file");
+// NC_CLOBBER would truncate the file at `path` in place, under any reader holding it open,
+// before HDF5 finds that file locked and fails; removing it first and creating with
+// NC_NOCLOBBER (O_EXCL, which never follows a link) makes the new file a new one.
+NetcdfFile::NetcdfFile(std::string path, std::chrono::steady_clock::duration flush_interval)
+    : path_(std::move(path)), flush_interval_(flush_interval) {
+  removeEntry(path_);
+  check(nc_create(path_.c_str(), NC_NETCDF4 | NC_NOCLOBBER, &id_), "cannot create the file");
 }
 
-NetcdfFile::~NetcdfFile() { nc_close(id_); }  // everything written is already synced
+NetcdfFile::~NetcdfFile() {
+  try {
+    drainAll();
+  } catch (const std::exception&) {
+    // A destructor cannot report it: a writer that must know calls flush() first.
+  }
+  nc_close(id_);
+}
 
 void NetcdfFile::check(int status, const std::string& what) const {
   if (status != NC_NOERR) fail(status, what);
@@ -31,9 +47,30 @@ int NetcdfFile::defineVariable(const std::string& name, nc_type type,
   check(nc_def_var(id_, name.c_str(), type, static_cast<int>(dimensions.size()), dimensions.data(),
                    &var),
         "defining variable " + name);
+  defineRecordLayout(var, dimensions, type);
   putAttribute(var, "long_name", long_name);
   if (!units.empty()) putAttribute(var, "units", units);
   return var;
+}
+
+void NetcdfFile::defineRecordLayout(int variable, const std::vector<int>& dimensions,
+                                    nc_type type) {
+  int unlimited_count = 0;
+  check(nc_inq_unlimdims(id_, &unlimited_count, nullptr), "reading the record dimensions");
+  std::vector<int> unlimited(unlimited_count);
+  check(nc_inq_unlimdims(id_, &unlimited_count, unlimited.data()), "reading the record dimensions");
+  if (dimensions.empty() ||
+      std::find(unlimited.begin(), unlimited.end(), dimensions[0]) == unlimited.end())
+    return;
+  std::vector<size_t> extents(dimensions.size() - 1);
+  for (size_t d = 1; d < dimensions.size(); ++d)
+    check(nc_inq_dimlen(id_, dimensions[d], &extents[d - 1]), "reading a dimension's length");
+  size_t value_bytes = 0;
+  check(nc_inq_type(id_, type, nullptr, &value_bytes), "reading a type's size");
+  const std::vector<size_t> chunks = recordChunks(extents, value_bytes);
+  check(nc_def_var_chunking(id_, variable, NC_CHUNKED, chunks.data()),
+        "chunking variable " + variableName(variable));
+  buffers_.insert_or_assign(variable, RecordBuffer(extents, chunks[0]));
 }
 
 void NetcdfFile::putAttribute(int variable, const std::string& name, const std::string& value) {
@@ -53,27 +90,78 @@ void NetcdfFile::putAttribute(int variable, const std::string& name, double valu
 
 void NetcdfFile::endDefine() { check(nc_enddef(id_), "leaving define mode"); }
 
-void NetcdfFile::redefine() { check(nc_redef(id_), "entering define mode"); }
+void NetcdfFile::redefine() {
+  drainAll();
+  check(nc_redef(id_), "entering define mode");
+}
 
 void NetcdfFile::put(int variable, const std::vector<size_t>& start,
                      const std::vector<size_t>& count, const double* values) {
-  const int status = nc_put_vara_double(id_, variable, start.data(), count.data(), values);
-  if (status != NC_NOERR) fail(status, "writing " + variableName(variable));
+  put(variable, start, count, values, NC_DOUBLE);
 }
 
 void NetcdfFile::put(int variable, const std::vector<size_t>& start,
                      const std::vector<size_t>& count, const int* values) {
-  const int status = nc_put_vara_int(id_, variable, start.data(), count.data(), values);
-  if (status != NC_NOERR) fail(status, "writing " + variableName(variable));
+  put(variable, start, count, values, NC_INT);
 }
 
 void NetcdfFile::put(int variable, const std::vector<size_t>& start,
                      const std::vector<size_t>& count, const char* values) {
-  const int status = nc_put_vara_text(id_, variable, start.data(), count.data(), values);
+  put(variable, start, count, values, NC_CHAR);
+}
+
+void NetcdfFile::put(int variable, const std::vector<size_t>& start,
+                     const std::vector<size_t>& count, const void* values, nc_type type) {
+  const auto buffer = buffers_.find(variable);
+  if (buffer == buffers_.end()) return write(variable, start, count, values, type);
+  if (buffer->second.accepts(start, count, type)) {
+    buffer->second.append(start, values, type);
+    if (buffer->second.full()) drain(variable, buffer->second);
+    return;
+  }
+  drain(variable, buffer->second);  // what is held comes first
+  write(variable, start, count, values, type);
+}
+
+void NetcdfFile::write(int variable, const std::vector<size_t>& start,
+                       const std::vector<size_t>& count, const void* values, nc_type type) {
+  int status = NC_NOERR;
+  switch (type) {
+    case NC_DOUBLE:
+      status = nc_put_vara_double(id_, variable, start.data(), count.data(),
+                                  static_cast<const double*>(values));
+      break;
+    case NC_INT:
+      status = nc_put_vara_int(id_, variable, start.data(), count.data(),
+                               static_cast<const int*>(values));
+      break;
+    default:
+      status = nc_put_vara_text(id_, variable, start.data(), count.data(),
+                                static_cast<const char*>(values));
+  }
   if (status != NC_NOERR) fail(status, "writing " + variableName(variable));
 }
 
-void NetcdfFile::sync() { check(nc_sync(id_), "flushing to disk"); }
+void NetcdfFile::drain(int variable, RecordBuffer& buffer) {
+  if (buffer.empty()) return;
+  write(variable, buffer.start(), buffer.count(), buffer.values(), buffer.type());
+  buffer.clear();
+}
+
+void NetcdfFile::drainAll() {
+  for (auto& [variable, buffer] : buffers_) drain(variable, buffer);
+}
+
+void NetcdfFile::sync() {
+  if (flushes_ == 0 || std::chrono::steady_clock::now() - last_flush_ >= flush_interval_) flush();
+}
+
+void NetcdfFile::flush() {
+  drainAll();
+  check(nc_sync(id_), "flushing to disk");
+  last_flush_ = std::chrono::steady_clock::now();
+  ++flushes_;
+}
 
 std::string NetcdfFile::variableName(int variable) const {
   if (variable == NC_GLOBAL) return "";

@@ -1,18 +1,32 @@
 #pragma once
 // A netCDF-4 file opened for writing through the netCDF C API, with every call's status checked:
 // a failing call throws std::runtime_error "PATH: WHAT: <nc_strerror text>". Closes the file
-// when destroyed.
+// when destroyed (which flushes it).
+//
+// Flushing (nc_sync: HDF5 writes its metadata cache) is what makes the file readable after a
+// crash, and it costs milliseconds, growing with the file: sync() flushes at most once per
+// flush interval, so a writer that syncs after every record and is killed loses at most the
+// records of the last interval, at a cost that no longer grows with the records written.
 #include <netcdf.h>
 
+#include <chrono>
+#include <map>
 #include <string>
 #include <vector>
+
+#include "apps/output/record_buffer.hpp"
 
 namespace flexmoor::app {
 
 class NetcdfFile {
  public:
-  // Creates (or replaces) the file in netCDF-4 format, in define mode.
-  explicit NetcdfFile(std::string path);
+  static constexpr std::chrono::milliseconds kFlushInterval{1000};
+
+  // Creates the file in netCDF-4 format, in define mode. Whatever was at `path` is removed first
+  // (a symbolic link itself, not its target), so a reader that holds an earlier file there open
+  // keeps it whole and the new file is a new one.
+  explicit NetcdfFile(std::string path,
+                      std::chrono::steady_clock::duration flush_interval = kFlushInterval);
   ~NetcdfFile();
   NetcdfFile(const NetcdfFile&) = delete;
   NetcdfFile& operator=(const NetcdfFile&) = delete;
@@ -24,7 +38,8 @@ class NetcdfFile {
 
   // Define mode. length NC_UNLIMITED makes a record dimension.
   int defineDimension(const std::string& name, size_t length);
-  // A variable with its `long_name` and, unless empty, `units` attribute.
+  // A variable with its `long_name` and, unless empty, `units` attribute. A variable whose first
+  // dimension is unlimited (a record variable) is chunked for long series (record_chunks.hpp).
   int defineVariable(const std::string& name, nc_type type, const std::vector<int>& dimensions,
                      const std::string& long_name, const std::string& units = "");
   // A text attribute of a variable, or of the file for NC_GLOBAL.
@@ -34,22 +49,40 @@ class NetcdfFile {
   void endDefine();
   void redefine();
 
-  // Data mode: the hyperslab at `start` of shape `count`, in C (row-major) order.
+  // Data mode: the hyperslab at `start` of shape `count`, in C (row-major) order. Whole records
+  // of a record variable, one after the other, are held in memory (record_buffer.hpp) and written
+  // a chunk of records at a time, and at every flush; an error writing them is thrown then.
   void put(int variable, const std::vector<size_t>& start, const std::vector<size_t>& count,
            const double* values);
   void put(int variable, const std::vector<size_t>& start, const std::vector<size_t>& count,
            const int* values);
   void put(int variable, const std::vector<size_t>& start, const std::vector<size_t>& count,
            const char* values);
-  // Flushes everything written so far to disk.
+  // Flushes everything put so far to disk when the last flush is at least the flush interval
+  // old; the first call always flushes.
   void sync();
+  // Flushes everything put so far to disk now.
+  void flush();
+  // How many times the file was flushed so far.
+  int flushes() const { return flushes_; }
 
  private:
   [[noreturn]] void fail(int status, const std::string& what) const;
   std::string variableName(int variable) const;
+  void defineRecordLayout(int variable, const std::vector<int>& dimensions, nc_type type);
+  void put(int variable, const std::vector<size_t>& start, const std::vector<size_t>& count,
+           const void* values, nc_type type);
+  void write(int variable, const std::vector<size_t>& start, const std::vector<size_t>& count,
+             const void* values, nc_type type);
+  void drain(int variable, RecordBuffer& buffer);
+  void drainAll();
 
   std::string path_;
   int id_ = -1;
+  std::chrono::steady_clock::duration flush_interval_;
+  std::chrono::steady_clock::time_point last_flush_;
+  int flushes_ = 0;
+  std::map<int, RecordBuffer> buffers_;  // of every record variable
 };
 
 }  // namespace flexmoor::app

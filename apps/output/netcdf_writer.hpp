@@ -22,7 +22,8 @@
 // membrane_resultant_max/_min (time, element; _FillValue off membranes), angular_frequency (time,
 // mode) and mode_shape_x/_y/_z (time, mode, node; mass^-1/2) with _FillValue off modes steps.
 //
-// Each write is flushed to disk (nc_sync), so a run that is killed keeps every finished record.
+// Each write is flushed to disk at most once a second (NetcdfFile::sync), so a run that is killed
+// keeps every record but those of its last second.
 // No NaN or infinity is ever written: a frame holding one is refused as a whole.
 #include <array>
 #include <string>
@@ -41,11 +42,14 @@ class NetcdfWriter {
   // error when a call fails.
   NetcdfWriter(const std::string& path, const model::Model& model, const Case& c);
 
-  // Appends one step record and flushes the file. Throws std::runtime_error, before writing any
+  // Appends one step record and syncs the file (at most once a second). Throws std::runtime_error, before writing any
   // of the record, when the frame does not match the model or the point layout of the first
   // frame, when a value is NaN or infinite (naming the variable and its indices), or when the
   // step name is longer than name_strlen.
   void write(const ResultFrame& frame);
+
+  // Flushes every record written so far to disk now.
+  void flush() { file_.flush(); }
 
   size_t records() const { return records_; }
   const std::string& path() const { return file_.path(); }

@@ -2,11 +2,11 @@
 
 #include <charconv>
 #include <cstdio>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "apps/output/atomic_output.hpp"
 #include "apps/output/finite_value.hpp"
 
 namespace flexmoor::app {
@@ -95,10 +95,7 @@ void writeSummaryJson(const std::string& path, const std::string& case_name,
   writeObject(text, "units", units, quoted);
   text << "\n}\n";
 
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  file << text.str();
-  file.close();
-  if (!file) throw std::runtime_error(path + ": cannot write the summary file");
+  writeFileAtomically(path, text.str());
 }
 
 }  // namespace flexmoor::app

@@ -1,7 +1,6 @@
 #include "apps/output/vtk_writer.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -9,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/output/atomic_output.hpp"
 #include "apps/output/finite_value.hpp"
 #include "apps/output/membrane_resultants.hpp"
 
@@ -155,10 +155,7 @@ void writeVtk(const std::string& path, const model::Model& model, const ResultFr
   }
   writeCellData(text, path, frame);
 
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  file << text.str();
-  file.close();
-  if (!file) throw std::runtime_error(path + ": cannot write the VTK file");
+  writeFileAtomically(path, text.str());
 }
 
 }  // namespace flexmoor::app

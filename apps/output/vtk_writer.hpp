@@ -12,8 +12,9 @@
 
 namespace flexmoor::app {
 
-// Writes the file at `path`. Throws std::runtime_error, before anything is written, when a value
-// is NaN or infinite or the frame does not match the model, and when the file cannot be written.
+// Writes the file at `path`, atomically (atomic_output.hpp: a symbolic link there is replaced, not
+// followed). Throws std::runtime_error, before anything is written, when a value is NaN or
+// infinite or the frame does not match the model, and when the file cannot be written.
 void writeVtk(const std::string& path, const model::Model& model, const ResultFrame& frame);
 
 }  // namespace flexmoor::app

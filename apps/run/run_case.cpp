@@ -4,11 +4,15 @@
 #include <filesystem>
 #include <iomanip>
 #include <ostream>
+#include <set>
 
+#include "apps/output/atomic_output.hpp"
 #include "apps/output/netcdf_writer.hpp"
+#include "apps/output/output_lock.hpp"
 #include "apps/output/summary_json.hpp"
 #include "apps/output/summary_quantities.hpp"
 #include "apps/output/vtk_writer.hpp"
+#include "apps/run/case_outputs.hpp"
 #include "libstruct/solve/modal.hpp"
 #include "libstruct/solve/newmark.hpp"
 #include "libstruct/solve/static_solver.hpp"
@@ -33,11 +37,11 @@ model::NodalField reactions(const model::Model& m, const model::Assembler& a,
   return r;
 }
 
-// Everything one run shares: the model, its assembler, the writers and the log.
+// Everything one run shares: the model, its assembler, the netCDF writer and the log.
 class Runner {
  public:
-  Runner(const Case& c, const RunOptions& o, RunOutcome& out, std::ostream& log)
-      : c_(c), o_(o), log_(log), assembler_(*c.model), writer_(out.netcdf_path, *c.model, c) {
+  Runner(const Case& c, const std::string& netcdf_path, std::ostream& log)
+      : c_(c), log_(log), assembler_(*c.model), writer_(netcdf_path, *c.model, c) {
     slog_.message = [&log](const std::string& s) { log << "  " << s << std::endl; };
   }
 
@@ -81,15 +85,10 @@ class Runner {
   }
 
   void write(const ResultFrame& f) { writer_.write(f); }
+  // Makes every record written so far survive a kill (records are synced once a second).
+  void flush() { writer_.flush(); }
   // True when the last step (a dynamic one) already wrote its closing state while streaming.
   bool streamed() const { return streamed_; }
-
-  void vtk(const ResultFrame& f, int i) const {
-    if (!o_.vtk) return;
-    const fs::path path =
-        fs::path(o_.output_dir) / (c_.name + "-" + std::to_string(i + 1) + ".vtk");
-    writeVtk(path.string(), *c_.model, f);
-  }
 
  private:
   ResultFrame modes(int i, const model::State& state) {
@@ -133,13 +132,51 @@ class Runner {
   }
 
   const Case& c_;
-  const RunOptions& o_;
   std::ostream& log_;
   model::Assembler assembler_;
   NetcdfWriter writer_;
   solve::SolveLog slog_;
   bool streamed_ = false;
 };
+
+// Runs the steps in order, streaming to `netcdf_path`; each finished step's closing state goes
+// to `states` and its frame to `frames`. Returns kNotConverged, after writing the last converged
+// state, when a step does not converge.
+ExitCode runSteps(const Case& c, const std::string& netcdf_path, std::ostream& log,
+                  std::ostream& diag, std::vector<model::State>& states,
+                  std::vector<ResultFrame>& frames) {
+  Runner runner(c, netcdf_path, log);
+  model::State state = c.model->initialState();
+  for (size_t i = 0; i < c.steps.size(); ++i) {
+    const StepSpec& step = c.steps[i];
+    log << "step " << i + 1 << "/" << c.steps.size() << ": " << step.name << std::endl;
+    try {
+      ResultFrame f = runner.run(static_cast<int>(i), state);
+      states.push_back(state);
+      f.state = &states.back();
+      frames.push_back(std::move(f));
+    } catch (const solve::ConvergenceError& e) {
+      diag << "flexmoor: step " << i + 1 << " (" << step.name << ", " << step.where.file << ":"
+           << step.where.line << ") did not converge: " << e.what() << std::endl;
+      runner.write(runner.frame(static_cast<int>(i), step.name + " (last converged)", state));
+      runner.flush();
+      return kNotConverged;
+    }
+    if (!runner.streamed()) runner.write(frames.back());
+    runner.flush();
+  }
+  return kSuccess;
+}
+
+// What a run that failed leaves: the earlier results untouched, this run's records aside.
+std::string whatIsLeft(const CaseOutputs& files) {
+  std::string left = "  " + files.netcdf() +
+                     (fs::exists(files.netcdf()) ? " is left as the last finished run wrote it"
+                                                 : " was not written");
+  if (fs::exists(files.partialNetcdf()))
+    left += "; the records this run wrote are in " + files.partialNetcdf();
+  return left + "\n";
+}
 
 std::vector<std::pair<std::string, double>> evaluate(
     const Case& c, const std::vector<ResultFrame>& frames,
@@ -154,47 +191,61 @@ std::vector<std::pair<std::string, double>> evaluate(
   return values;
 }
 
+// The run ended: its VTK files and summary are written, what an earlier run left and this one
+// did not write is removed, and last the netCDF is renamed into place.
+void putOutputsInPlace(const Case& c, const RunOptions& options, const CaseOutputs& files,
+                       const std::vector<ResultFrame>& frames, RunOutcome& out,
+                       const std::vector<std::pair<std::string, std::string>>& units) {
+  std::set<int> vtk_steps;
+  for (size_t i = 0; options.vtk && i < frames.size(); ++i) {
+    writeVtk(files.vtk(static_cast<int>(i) + 1), *c.model, frames[i]);
+    vtk_steps.insert(static_cast<int>(i) + 1);
+  }
+  writeSummaryJson(out.summary_path, c.name, out.summary, units);
+  files.removeStale(vtk_steps);
+  moveIntoPlace(files.partialNetcdf(), files.netcdf());
+}
+
 }  // namespace
 
-RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log) {
-  fs::create_directories(options.output_dir);
+RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
+                   std::ostream& diag) {
+  const CaseOutputs files(
+      options.output_dir.empty() ? defaultOutputDirectory(c.name) : options.output_dir, c.name);
   RunOutcome out;
-  out.netcdf_path = (fs::path(options.output_dir) / (c.name + ".nc")).string();
-  out.summary_path = (fs::path(options.output_dir) / "summary.json").string();
-
-  const model::Model& m = *c.model;
-  Runner runner(c, options, out, log);
-  log << "flexmoor: case " << c.name << " (" << c.file << ")\n  " << m.nodeCount() << " nodes, "
-      << m.elementCount() << " elements, " << m.equationCount() << " equations, " << c.steps.size()
-      << " steps\n";
-
-  std::vector<model::State> states;  // the state closing each step; frames point into it
-  states.reserve(c.steps.size());
-  std::vector<ResultFrame> frames;
-  model::State state = m.initialState();
-  for (size_t i = 0; i < c.steps.size(); ++i) {
-    const StepSpec& step = c.steps[i];
-    log << "step " << i + 1 << "/" << c.steps.size() << ": " << step.name << std::endl;
-    try {
-      ResultFrame f = runner.run(static_cast<int>(i), state);
-      states.push_back(state);
-      f.state = &states.back();
-      frames.push_back(std::move(f));
-    } catch (const solve::ConvergenceError& e) {
-      log << "flexmoor: step " << i + 1 << " (" << step.name << ", " << step.where.file << ":"
-          << step.where.line << ") did not converge: " << e.what() << std::endl;
-      runner.write(runner.frame(static_cast<int>(i), step.name + " (last converged)", state));
-      log << "  last converged state written to " << out.netcdf_path << "\n";
-      out.exit_code = kNotConverged;
-      break;
-    }
-    if (!runner.streamed()) runner.write(frames.back());
-    runner.vtk(frames.back(), static_cast<int>(i));
-  }
-
+  out.netcdf_path = files.netcdf();
+  out.summary_path = files.summary();
   std::vector<std::pair<std::string, std::string>> units;
-  out.summary = evaluate(c, frames, units);
-  writeSummaryJson(out.summary_path, c.name, out.summary, units);
+  try {
+    fs::create_directories(files.directory());
+    const OutputLock lock(files.lock(), files.directory() + ": another run of case " + c.name +
+                                            " is writing there (" + files.lock() +
+                                            " is locked); this run is refused and writes "
+                                            "nothing: let that one end or choose another "
+                                            "directory with -o");
+    const model::Model& m = *c.model;
+    log << "flexmoor: case " << c.name << " (" << c.file << ")\n  " << m.nodeCount() << " nodes, "
+        << m.elementCount() << " elements, " << m.equationCount() << " equations, "
+        << c.steps.size() << " steps\n";
+    std::vector<model::State> states;  // the state closing each step; frames point into it
+    states.reserve(c.steps.size());
+    std::vector<ResultFrame> frames;
+    try {
+      out.exit_code = runSteps(c, files.partialNetcdf(), log, diag, states, frames);
+      out.summary = evaluate(c, frames, units);
+      putOutputsInPlace(c, options, files, frames, out, units);
+    } catch (const std::exception& e) {
+      diag << "flexmoor: " << e.what() << "\n" << whatIsLeft(files);
+      out.exit_code = kRunFailed;
+      return out;
+    }
+  } catch (const std::exception& e) {  // the run was refused: nothing was written
+    diag << "flexmoor: " << e.what() << "\n";
+    out.exit_code = kRunFailed;
+    return out;
+  }
+  if (out.exit_code == kNotConverged)
+    diag << "  last converged state written to " << out.netcdf_path << "\n";
   log << "summary (" << unitNames(c.units).length << ", " << unitNames(c.units).force << "):\n";
   for (size_t k = 0; k < out.summary.size(); ++k)
     log << "  " << std::left << std::setw(24) << out.summary[k].first << std::setprecision(8)

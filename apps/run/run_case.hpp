@@ -1,7 +1,13 @@
 #pragma once
 // Runs a case: its analysis steps in order, each from the state the previous one left, streaming
-// every finished step to netCDF and closing with summary.json.
-#include <iosfwd>
+// every finished step to netCDF and closing with the VTK files and the summary.
+//
+// Results are never lost: a run holds DIR/.<case>.lock (a second run of the case into DIR is
+// refused), streams into DIR/<case>.nc.partial and, when it ends (exit 0, or 3 with the last
+// converged state), writes its VTK files and summary and renames the netCDF into place, removing
+// the VTK files of an earlier run that it did not write. A run that fails (exit 4), is refused
+// or is killed leaves the earlier run's DIR/<case>.nc as it was (case_outputs.hpp names the files).
+#include <iostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,8 +17,8 @@
 namespace flexmoor::app {
 
 struct RunOptions {
-  std::string output_dir = "results";
-  bool vtk = true;  // write DIR/<case>-<step>.vtk for ParaView
+  std::string output_dir;  // empty: results/<case>
+  bool vtk = true;         // write DIR/<case>-<step>.vtk for ParaView
 };
 
 enum ExitCode { kSuccess = 0, kUsage = 1, kBadInput = 2, kNotConverged = 3, kRunFailed = 4 };
@@ -24,6 +30,9 @@ struct RunOutcome {
   std::vector<std::pair<std::string, double>> summary;
 };
 
-RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log);
+// Progress and the summary go to `log`; diagnoses (a step that did not converge, a failure, a
+// refused run) to `diag`. Returns kNotConverged or kRunFailed rather than throwing.
+RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
+                   std::ostream& diag = std::cerr);
 
 }  // namespace flexmoor::app

@@ -38,7 +38,7 @@ TEST_P(Example1, NamedCaseReproducesTable1Within1_5Percent) {
   const fs::path dir = scratch(row.case_name);
   const CliRun r = flexmoor(std::string("run ") + row.case_name + " -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const std::string json = readFile(dir / "summary.json");
+  const std::string json = readFile(dir / (std::string(row.case_name) + ".summary.json"));
   EXPECT_NEAR(summaryValue(json, "center_sag"), row.sag, 0.015 * row.sag) << json;
   EXPECT_NEAR(summaryValue(json, "support_movement"), row.movement, 0.015 * row.movement) << json;
   EXPECT_TRUE(fs::exists(dir / (std::string(row.case_name) + ".nc")));

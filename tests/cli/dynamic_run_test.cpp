@@ -53,7 +53,7 @@ TEST(DynamicRun, StreamsEveryNthStepOfAScheduleAndReportsProgress) {
   // Pretension and first mode: E A (lambda^2 - 1) / 2 lambda with lambda = 1.001, and the
   // consistent-mass string of 8 linear elements, omega^2 = (6 S / (rho h0^2)) (1 - cos(pi / 8)) /
   // (2 + cos(pi / 8)) with S = E (lambda^2 - 1) / 2 (reference quantities, Eq. 2.53).
-  const std::string json = flexmoor::test::readFile(dir / "summary.json");
+  const std::string json = flexmoor::test::readFile(dir / "driven-taut-cable.summary.json");
   const double lambda = 1.001, S = 2.0e11 * (lambda * lambda - 1.0) / 2.0, h0 = 10.0 / 8;
   const double c = std::cos(M_PI / 8);
   EXPECT_NEAR(flexmoor::test::summaryValue(json, "tension") / (S * 1.0e-4 * lambda), 1.0, 1e-9);

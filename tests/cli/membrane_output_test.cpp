@@ -79,7 +79,7 @@ TEST(MembraneOutput, PrincipalResultantsInNetcdfVtkAndSummaryMatchClosedForm) {
   }
   nc_close(file);
 
-  const std::string json = flexmoor::test::readFile(dir / "summary.json");
+  const std::string json = flexmoor::test::readFile(dir / "stretched-sheet.summary.json");
   EXPECT_NEAR(flexmoor::test::summaryValue(json, "n_max") / expected, 1.0, 1e-9) << json;
   EXPECT_NEAR(flexmoor::test::summaryValue(json, "n_min") / expected, 1.0, 1e-9) << json;
   EXPECT_NE(json.find("\"n_max\": \"N/m\""), std::string::npos) << json;

@@ -8,19 +8,27 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <vector>
 
 namespace flexmoor::test {
 
 namespace fs = std::filesystem;
 
 CliRun flexmoor(const std::string& args) {
-  const std::string command = std::string(FLEXMOOR_BINARY) + " " + args + " 2>&1";
-  CliRun r{0, ""};
+  char errors[] = "/tmp/flexmoor-cli-stderr-XXXXXX";
+  const int fd = mkstemp(errors);
+  close(fd);
+  const std::string command =
+      std::string(FLEXMOOR_BINARY) + " " + args + " 2>" + std::string(errors);
+  CliRun r{0, "", ""};
   FILE* pipe = popen(command.c_str(), "r");
   char buffer[4096];
   while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
   const int status = pclose(pipe);
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.errors = readFile(errors);
+  r.output += r.errors;
+  fs::remove(errors);
   return r;
 }
 
@@ -29,6 +37,19 @@ std::string readFile(const fs::path& p) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+std::string readSummary(const fs::path& dir) {
+  std::vector<fs::path> found;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    const std::string suffix = ".summary.json";
+    if (name.size() > suffix.size() &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+      found.push_back(entry.path());
+  }
+  EXPECT_EQ(found.size(), 1u) << "summaries in " << dir;
+  return found.size() == 1 ? readFile(found[0]) : "";
 }
 
 double summaryValue(const std::string& json, const std::string& key) {
@@ -55,7 +76,7 @@ std::string runNamedCase(const std::string& case_name) {
   const fs::path dir = scratch(case_name + "-" + std::to_string(getpid()));
   const CliRun r = flexmoor("run " + case_name + " -o " + dir.string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  return readFile(dir / "summary.json");
+  return readFile(dir / (case_name + ".summary.json"));
 }
 
 std::string runCaseText(const std::string& name, const std::string& text) {
@@ -64,7 +85,7 @@ std::string runCaseText(const std::string& name, const std::string& text) {
   std::ofstream(file) << text;
   const CliRun r = flexmoor("run " + file.string() + " -o " + dir.string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  return readFile(dir / "summary.json");
+  return readSummary(dir);
 }
 
 }  // namespace flexmoor::test

@@ -7,7 +7,8 @@ namespace flexmoor::test {
 
 struct CliRun {
   int exit_code;
-  std::string output;  // stdout and stderr
+  std::string output;  // stdout, then stderr
+  std::string errors;  // stderr alone
 };
 
 // Runs `flexmoor ARGS` (the binary built with the tests) and collects its output and exit code.
@@ -15,7 +16,10 @@ CliRun flexmoor(const std::string& args);
 
 std::string readFile(const std::filesystem::path& p);
 
-// The value of "key": NUMBER in a summary.json; NaN when absent.
+// The text of the one <case>.summary.json in `dir` (empty when there is none or several).
+std::string readSummary(const std::filesystem::path& dir);
+
+// The value of "key": NUMBER in a <case>.summary.json; NaN when absent.
 double summaryValue(const std::string& json, const std::string& key);
 
 // A fresh, empty scratch directory for one test.
@@ -23,11 +27,11 @@ std::filesystem::path scratch(const std::string& name);
 
 // Runs a named case (`flexmoor run NAME`) into a scratch directory of its own for this process
 // (ctest -j runs the checks of one case side by side), expects exit code 0 and returns the text
-// of its summary.json.
+// of its <case>.summary.json.
 std::string runNamedCase(const std::string& case_name);
 
 // Writes `text` as NAME.yaml into a scratch directory of its own for this process, runs it,
-// expects exit code 0 and returns the text of its summary.json.
+// expects exit code 0 and returns the text of its <case>.summary.json.
 std::string runCaseText(const std::string& name, const std::string& text);
 
 // A case name as a GoogleTest name: "ex1-suspended-cable-8xL2" -> "ex1_suspended_cable_8xL2".
