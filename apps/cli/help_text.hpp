@@ -30,7 +30,11 @@ Steps run in order, each from the state the previous one left:
                        resultants and mode shapes, with units; one record per step or per
                        output time, flushed as it goes
   DIR/<case>-<n>.vtk   the deformed shape (and mode shapes) after step n, for ParaView
-  DIR/summary.json     the case's summary quantities with their units
+  DIR/<case>.summary.json  the case's summary quantities with their units
+Every output's name starts with the case's, so cases can share one -o DIR. Outputs are put in
+place by a rename when the run ends: the netCDF streams into DIR/<case>.nc.partial, so a failed
+or killed run never spoils an earlier DIR/<case>.nc; a second run of the case into DIR at once
+is refused (the lock DIR/.<case>.lock).
 'flexmoor plot' draws time series of a result as a PNG figure.
 
 Exit codes:
@@ -38,7 +42,8 @@ Exit codes:
   1  usage error (an unknown command or option, a missing or extra argument)
   2  the case is invalid: every problem is listed on stderr as FILE:LINE: what is wrong
   3  a step did not converge: the last converged state is written, the diagnosis is on stderr
-  4  the run failed otherwise (an output could not be written, a value was not finite)
+  4  the run failed otherwise (an output could not be written, a value was not finite,
+     another run of the case is writing into DIR)
 
 Examples:
   flexmoor cases
@@ -77,11 +82,16 @@ Outputs, in DIR (default results/<case>/):
   DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions, one record per step or per
                        output time, flushed as it goes
   DIR/<case>-<n>.vtk   the deformed shape (and mode shapes) after step n (not with --no-vtk)
-  DIR/summary.json     the case's summary quantities with their units
+  DIR/<case>.summary.json  the case's summary quantities with their units
+Every output's name starts with the case's, so cases can share one -o DIR. Outputs are put in
+place by a rename when the run ends: the netCDF streams into DIR/<case>.nc.partial, so a failed
+or killed run never spoils an earlier DIR/<case>.nc; a second run of the case into DIR at once
+is refused (the lock DIR/.<case>.lock).
 
 Exit codes: 0 done; 1 usage error; 2 the case is invalid (every problem on stderr as
 FILE:LINE: what is wrong); 3 a step did not converge (the last converged state is written,
-the diagnosis is on stderr); 4 the run failed otherwise.
+the diagnosis is on stderr); 4 the run failed otherwise (an output could not be written,
+another run of the case is writing into DIR).
 
 Examples:
   flexmoor run ex1-suspended-cable-8xL2

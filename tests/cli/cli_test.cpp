@@ -71,7 +71,7 @@ TEST(Cli, HelpTeachesTheCommands) {
   EXPECT_EQ(r.exit_code, 0);
   expectAll(r, {"run", "check", "cases", "named case", "units: US", "relax", "static", "modes",
                 "dynamic", "DIR/<case>.nc", "netCDF-4", "CF", "DIR/<case>-<n>.vtk",
-                "DIR/summary.json", "results/<case>/", "Exit codes", "Examples", "COMMAND --help"});
+                "DIR/<case>.summary.json", "results/<case>/", "Exit codes", "Examples", "COMMAND --help"});
 }
 
 // Issue 9: `run --help` said "no case file or named case '--help'". Every command has its help.
@@ -101,7 +101,7 @@ TEST(Cli, RunTakesItsOptionsBeforeOrAfterTheCase) {
   const fs::path before = scratch("options-before");
   const CliRun a = flexmoor("run -o " + before.string() + " --no-vtk ex1-suspended-cable-8xL2");
   EXPECT_EQ(a.exit_code, 0) << a.output;
-  EXPECT_TRUE(fs::exists(before / "summary.json")) << a.output;
+  EXPECT_TRUE(fs::exists(before / "ex1-suspended-cable-8xL2.summary.json")) << a.output;
   EXPECT_TRUE(fs::exists(before / "ex1-suspended-cable-8xL2.nc")) << a.output;
   EXPECT_FALSE(fs::exists(before / "ex1-suspended-cable-8xL2-1.vtk")) << "--no-vtk";
 
