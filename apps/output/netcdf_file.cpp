@@ -88,6 +88,11 @@ void NetcdfFile::putAttribute(int variable, const std::string& name, double valu
         "writing attribute " + variableName(variable) + ":" + name);
 }
 
+void NetcdfFile::writtenInFull(int variable) {
+  check(nc_def_var_fill(id_, variable, NC_NOFILL, nullptr),
+        "defining variable " + variableName(variable) + " without fill");
+}
+
 void NetcdfFile::endDefine() { check(nc_enddef(id_), "leaving define mode"); }
 
 void NetcdfFile::redefine() {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <ctime>
+#include <deque>
 #include <stdexcept>
 #include <tuple>
 
@@ -47,8 +48,34 @@ struct NetcdfWriter::Slab {
   std::vector<double> values;
 };
 
+// The slabs of one record, kept from record to record so that gathering allocates nothing once
+// the first record has sized them (a deque: references to earlier slabs stay valid).
+class NetcdfWriter::Slabs {
+ public:
+  Slab& next(int variable, std::initializer_list<size_t> start,
+             std::initializer_list<size_t> count) {
+    if (used_ == pool_.size()) pool_.emplace_back();
+    Slab& s = pool_[used_++];
+    s.variable = variable;
+    s.start.assign(start);
+    s.count.assign(count);
+    s.values.clear();
+    return s;
+  }
+  void clear() { used_ = 0; }
+  auto begin() const { return pool_.begin(); }
+  auto end() const { return pool_.begin() + used_; }
+
+ private:
+  std::deque<Slab> pool_;
+  size_t used_ = 0;
+};
+
+NetcdfWriter::~NetcdfWriter() = default;
+
 NetcdfWriter::NetcdfWriter(const std::string& path, const model::Model& model, const Case& c)
-    : file_(path),
+    : slabs_(std::make_unique<Slabs>()),
+      file_(path),
       node_count_(model.nodeCount()),
       element_count_(model.elementCount()),
       reference_(model.reference()),
@@ -136,6 +163,10 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
                            "axial force at the first and the last node of the element", u.force);
   file_.putAttribute(tension_end_, "coordinates", kElementCoordinates);
   file_.putAttribute(tension_end_, "_FillValue", NC_FILL_DOUBLE);  // membranes and point masses
+  for (const int id : {time_, step_number_, step_name_, load_factor_, tension_end_})
+    file_.writtenInFull(id);
+  for (const Vector3Variable* v : {&displacement_, &position_, &velocity_, &reaction_})
+    for (const int id : v->id) file_.writtenInFull(id);
 }
 
 int NetcdfWriter::defineIndex(const std::string& name, int dimension,
@@ -207,6 +238,7 @@ void NetcdfWriter::definePoints(const ResultFrame& first) {
   tension_point_ = file_.defineVariable(
       "tension_point", NC_DOUBLE, {dim_step_, dim_point_},
       "axial force at the integration points, element by element in element order", force_unit_);
+  file_.writtenInFull(tension_point_);
   file_.putAttribute(tension_point_, "coordinates",
                      "step_number step_name load_factor point_element");
   const bool membranes = std::any_of(first.elements.begin(), first.elements.end(),
@@ -222,6 +254,7 @@ void NetcdfWriter::definePoints(const ResultFrame& first) {
                                  resultant_unit_);
       file_.putAttribute(*id, "_FillValue", NC_FILL_DOUBLE);  // elements that are not membranes
       file_.putAttribute(*id, "coordinates", kElementCoordinates);
+      file_.writtenInFull(*id);
     }
   file_.endDefine();
   file_.put(element_point_count_, {0}, {element_points_.size()}, element_points_.data());
@@ -248,11 +281,11 @@ void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
            " integration points; the file's layout has " + std::to_string(element_points_[e]));
 }
 
-void NetcdfWriter::gatherNodal(std::vector<Slab>& slabs, const Vector3Variable& v,
-                               const model::NodalField& field) const {
+void NetcdfWriter::gatherNodal(const Vector3Variable& v, const model::NodalField& field) {
   const size_t nodes = node_count_;
   for (int k = 0; k < 3; ++k) {
-    Slab s{v.id[k], {records_, 0}, {1, nodes}, std::vector<double>(nodes)};
+    Slab& s = slabs_->next(v.id[k], {records_, 0}, {1, nodes});
+    s.values.resize(nodes);
     for (size_t n = 0; n < nodes; ++n) {
       s.values[n] = field(k, n);
       requireFinite(s.values[n], path(), [&] {
@@ -260,14 +293,13 @@ void NetcdfWriter::gatherNodal(std::vector<Slab>& slabs, const Vector3Variable& 
                std::to_string(n) + "]";
       });
     }
-    slabs.push_back(std::move(s));
   }
 }
 
-void NetcdfWriter::gatherTensions(std::vector<Slab>& slabs, const ResultFrame& frame) const {
+void NetcdfWriter::gatherTensions(const ResultFrame& frame) {
   const size_t elements = element_count_;
-  Slab ends{tension_end_, {records_, 0, 0}, {1, elements, 2}, {}};
-  Slab points{tension_point_, {records_, 0}, {1, 0}, {}};
+  Slab& ends = slabs_->next(tension_end_, {records_, 0, 0}, {1, elements, 2});
+  Slab& points = slabs_->next(tension_point_, {records_, 0}, {1, 0});
   for (size_t e = 0; e < elements; ++e) {
     const element::ElementResult& r = frame.elements[e];
     const bool line = !r.point_tension.empty();  // an axial force applies to lines only
@@ -291,15 +323,15 @@ void NetcdfWriter::gatherTensions(std::vector<Slab>& slabs, const ResultFrame& f
     }
   }
   points.count[1] = points.values.size();
-  slabs.push_back(std::move(ends));
-  slabs.push_back(std::move(points));
 }
 
-void NetcdfWriter::gatherResultants(std::vector<Slab>& slabs, const ResultFrame& frame) const {
+void NetcdfWriter::gatherResultants(const ResultFrame& frame) {
   if (resultant_max_ < 0) return;
   const size_t elements = element_count_;
-  Slab larger{resultant_max_, {records_, 0}, {1, elements}, std::vector<double>(elements)};
-  Slab smaller{resultant_min_, {records_, 0}, {1, elements}, std::vector<double>(elements)};
+  Slab& larger = slabs_->next(resultant_max_, {records_, 0}, {1, elements});
+  Slab& smaller = slabs_->next(resultant_min_, {records_, 0}, {1, elements});
+  larger.values.resize(elements);
+  smaller.values.resize(elements);
   for (size_t e = 0; e < elements; ++e) {
     const auto n = principalResultants(frame.elements[e]);
     larger.values[e] = n ? n->first : NC_FILL_DOUBLE;
@@ -309,8 +341,6 @@ void NetcdfWriter::gatherResultants(std::vector<Slab>& slabs, const ResultFrame&
              std::to_string(e) + "]";
     });
   }
-  slabs.push_back(std::move(larger));
-  slabs.push_back(std::move(smaller));
 }
 
 // Modes of a modes step: circular frequencies and mass-normalised shapes, per record (records of
@@ -334,7 +364,7 @@ void NetcdfWriter::defineModes(size_t count) {
   file_.put(mode_index, {0}, {count}, oneBased(count).data());
 }
 
-void NetcdfWriter::gatherModes(std::vector<Slab>& slabs, const ResultFrame& frame) {
+void NetcdfWriter::gatherModes(const ResultFrame& frame) {
   if (frame.frequencies.empty()) return;
   if (dim_mode_ < 0) defineModes(frame.frequencies.size());
   if (frame.frequencies.size() != mode_count_)
@@ -342,17 +372,15 @@ void NetcdfWriter::gatherModes(std::vector<Slab>& slabs, const ResultFrame& fram
                              ": every modes step of a case must ask for the same number "
                              "of modes (" +
                              std::to_string(mode_count_) + ")");
-  Slab f{angular_frequency_, {records_, 0}, {1, mode_count_}, frame.frequencies};
+  Slab& f = slabs_->next(angular_frequency_, {records_, 0}, {1, mode_count_});
+  f.values = frame.frequencies;
   for (size_t m = 0; m < mode_count_; ++m)
     requireFinite(f.values[m], path(),
                   [&] { return "angular_frequency[mode " + std::to_string(m) + "]"; });
-  slabs.push_back(std::move(f));
   const size_t nodes = node_count_;
   for (int k = 0; k < 3; ++k) {
-    Slab s{mode_shape_.id[k],
-           {records_, 0, 0},
-           {1, mode_count_, nodes},
-           std::vector<double>(mode_count_ * nodes)};
+    Slab& s = slabs_->next(mode_shape_.id[k], {records_, 0, 0}, {1, mode_count_, nodes});
+    s.values.resize(mode_count_ * nodes);
     for (size_t m = 0; m < mode_count_; ++m)
       for (size_t n = 0; n < nodes; ++n) {
         s.values[m * nodes + n] = frame.mode_shapes[m](k, n);
@@ -361,34 +389,35 @@ void NetcdfWriter::gatherModes(std::vector<Slab>& slabs, const ResultFrame& fram
                  std::to_string(n) + "]";
         });
       }
-    slabs.push_back(std::move(s));
   }
 }
 
 void NetcdfWriter::write(const ResultFrame& frame) {
   requireMatches(frame);
   const model::State& s = *frame.state;
-  std::vector<Slab> slabs;
+  slabs_->clear();
   const auto gatherScalar = [&](int variable, const char* name, double value) {
     requireFinite(value, path(),
                   [&] { return std::string(name) + "[step " + std::to_string(records_) + "]"; });
-    slabs.push_back({variable, {records_}, {1}, {value}});
+    slabs_->next(variable, {records_}, {1}).values.push_back(value);
   };
   gatherScalar(time_, "time", s.time);
   gatherScalar(load_factor_, "load_factor", s.load_factor);
-  gatherNodal(slabs, displacement_, s.displacement);
-  gatherNodal(slabs, position_, reference_ + s.displacement);
-  gatherNodal(slabs, velocity_, s.velocity);
-  gatherNodal(slabs, reaction_, frame.reactions);
+  gatherNodal(displacement_, s.displacement);
+  position_values_ = reference_ + s.displacement;
+  gatherNodal(position_, position_values_);
+  gatherNodal(velocity_, s.velocity);
+  gatherNodal(reaction_, frame.reactions);
   if (dim_point_ < 0) definePoints(frame);
-  gatherTensions(slabs, frame);
-  gatherResultants(slabs, frame);
-  gatherModes(slabs, frame);
+  gatherTensions(frame);
+  gatherResultants(frame);
+  gatherModes(frame);
 
   const int step_number = frame.step_index + 1;
-  file_.put(step_number_, {records_}, {1}, &step_number);
+  record_start_[0] = records_;
+  file_.put(step_number_, record_start_, record_count_, &step_number);
   putText(step_name_, records_, frame.step_name);
-  for (const Slab& slab : slabs)
+  for (const Slab& slab : *slabs_)
     file_.put(slab.variable, slab.start, slab.count, slab.values.data());
   ++records_;
   file_.sync();
@@ -398,9 +427,10 @@ void NetcdfWriter::putText(int variable, size_t index, const std::string& text) 
   if (text.size() > kNameLength)
     throw std::runtime_error(path() + ": \"" + text + "\" is longer than name_strlen (" +
                              std::to_string(kNameLength) + ")");
-  std::string padded = text;
-  padded.resize(kNameLength, '\0');
-  file_.put(variable, {index, 0}, {1, kNameLength}, padded.data());
+  text_.assign(kNameLength, '\0');
+  text_.replace(0, text.size(), text);
+  text_start_[0] = index;
+  file_.put(variable, text_start_, text_count_, text_.data());
 }
 
 }  // namespace flexmoor::app

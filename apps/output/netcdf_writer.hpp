@@ -26,6 +26,7 @@
 // keeps every record but those of its last second.
 // No NaN or infinity is ever written: a frame holding one is refused as a whole.
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,7 @@ class NetcdfWriter {
   // attributes and units come from `c`. Throws std::runtime_error naming the path and the netCDF
   // error when a call fails.
   NetcdfWriter(const std::string& path, const model::Model& model, const Case& c);
+  ~NetcdfWriter();
 
   // Appends one step record and syncs the file (at most once a second). Throws std::runtime_error, before writing any
   // of the record, when the frame does not match the model or the point layout of the first
@@ -62,6 +64,7 @@ class NetcdfWriter {
     std::array<int, 3> id;
   };
   struct Slab;  // one variable's part of a record, checked before anything is written
+  class Slabs;  // the slabs of a record, reused from record to record
 
   void defineHeader(const model::Model& model, const Case& c);
   Vector3Variable defineVector3(const std::string& name, const std::vector<int>& dimensions,
@@ -71,14 +74,14 @@ class NetcdfWriter {
   void writeMesh(const model::Model& model);
   void definePoints(const ResultFrame& first);
   void defineModes(size_t count);
-  void gatherModes(std::vector<Slab>& slabs, const ResultFrame& frame);
+  void gatherModes(const ResultFrame& frame);
   void requireMatches(const ResultFrame& frame) const;
-  void gatherNodal(std::vector<Slab>& slabs, const Vector3Variable& v,
-                   const model::NodalField& field) const;
-  void gatherTensions(std::vector<Slab>& slabs, const ResultFrame& frame) const;
-  void gatherResultants(std::vector<Slab>& slabs, const ResultFrame& frame) const;
+  void gatherNodal(const Vector3Variable& v, const model::NodalField& field);
+  void gatherTensions(const ResultFrame& frame);
+  void gatherResultants(const ResultFrame& frame);
   void putText(int variable, size_t index, const std::string& text);
 
+  std::unique_ptr<Slabs> slabs_;
   NetcdfFile file_;
   int node_count_ = 0;
   int element_count_ = 0;
@@ -86,6 +89,11 @@ class NetcdfWriter {
   std::string force_unit_, resultant_unit_, mass_unit_;
   std::vector<int> element_points_;  // integration points per element, from the first frame
   size_t records_ = 0;
+  // Buffers reused by every record, so that writing a record allocates nothing.
+  model::NodalField position_values_;
+  std::string text_;
+  std::vector<size_t> record_start_{0}, record_count_{1};
+  std::vector<size_t> text_start_{0, 0}, text_count_{1, kNameLength};
 
   int dim_step_ = -1, dim_node_ = -1, dim_element_ = -1, dim_end_ = -1, dim_name_ = -1;
   int dim_element_node_ = -1, dim_point_ = -1;
