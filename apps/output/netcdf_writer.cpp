@@ -163,8 +163,8 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
                            "axial force at the first and the last node of the element", u.force);
   file_.putAttribute(tension_end_, "coordinates", kElementCoordinates);
   file_.putAttribute(tension_end_, "_FillValue", NC_FILL_DOUBLE);  // membranes and point masses
-  for (const int id : {time_, step_number_, step_name_, load_factor_, tension_end_})
-    file_.writtenInFull(id);
+  // (tension_end keeps its fill: NC_NOFILL would drop the _FillValue that marks membranes.)
+  for (const int id : {time_, step_number_, step_name_, load_factor_}) file_.writtenInFull(id);
   for (const Vector3Variable* v : {&displacement_, &position_, &velocity_, &reaction_})
     for (const int id : v->id) file_.writtenInFull(id);
 }
@@ -254,7 +254,6 @@ void NetcdfWriter::definePoints(const ResultFrame& first) {
                                  resultant_unit_);
       file_.putAttribute(*id, "_FillValue", NC_FILL_DOUBLE);  // elements that are not membranes
       file_.putAttribute(*id, "coordinates", kElementCoordinates);
-      file_.writtenInFull(*id);
     }
   file_.endDefine();
   file_.put(element_point_count_, {0}, {element_points_.size()}, element_points_.data());
