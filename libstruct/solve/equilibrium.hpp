@@ -30,6 +30,10 @@ bool converged(const Convergence& c, double displacement_norm, double residual_n
 double displacementNorm(const model::Assembler& assembler, const Eigen::VectorXd& du,
                         const model::NodalField& u);
 
+// A static or relaxation step finds the structure at rest: the free dofs' velocity and
+// acceleration are set to zero and the motion record is cleared (the supports keep theirs).
+void putAtRest(const model::Assembler& assembler, model::State& state);
+
 // Displacement of all dofs as one full vector (3 * node + component).
 inline Eigen::Map<const Eigen::VectorXd> asVector(const model::NodalField& field) {
   return Eigen::Map<const Eigen::VectorXd>(field.data(), field.size());
