@@ -39,6 +39,7 @@ class Runner {
   Runner(const Case& c, const RunOptions& o, RunOutcome& out, std::ostream& log)
       : c_(c), o_(o), log_(log), assembler_(*c.model), writer_(out.netcdf_path, *c.model, c) {
     slog_.message = [&log](const std::string& s) { log << "  " << s << std::endl; };
+    slog_.node_name = [&c](int n) { return "node " + std::to_string(c.node_ids[n]); };
   }
 
   // Runs step i from `state`; returns its closing frame. Throws ConvergenceError with `state`

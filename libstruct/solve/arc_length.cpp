@@ -142,6 +142,27 @@ std::string shortOfTarget(double target, double reached, double peak, int sign, 
   return s.str();
 }
 
+// Displacements past this many times the model's size mean the path has run away: the residual
+// test means nothing there (its round-off floor grows with the coordinates, Residual::floor), so
+// the increments "converge" with any residual, and a load the structure cannot carry would end in
+// a garbage equilibrium (Example 3's tube past its limit pressure: 5e16 ft, exit 0, before issue 9).
+constexpr double kRunaway = 1e3;
+
+// The diagonal of the reference configuration's bounding box.
+double modelSize(const model::Model& m) {
+  if (m.nodeCount() == 0) return 0.0;
+  return (m.reference().rowwise().maxCoeff() - m.reference().rowwise().minCoeff()).norm();
+}
+
+std::string runaway(double target, double reached, double peak, double displacement, double size) {
+  std::ostringstream s;
+  s << "arc-length path runs away: at load factor " << reached << " the displacements reach "
+    << displacement << ", over " << kRunaway << " times the model's size (" << size
+    << "), with the load factor never past " << peak << ": the structure cannot carry load factor "
+    << target << "; the most it carries is about " << peak << " times the reference load";
+  return s.str();
+}
+
 }  // namespace
 
 StaticReport solveArcLength(const model::Assembler& assembler, model::State& state,
@@ -153,6 +174,7 @@ StaticReport solveArcLength(const model::Assembler& assembler, model::State& sta
   const int sign = target >= state.load_factor ? 1 : -1;
   double ds = -1.0;                 // set by the first predictor
   double peak = state.load_factor;  // the largest load factor (towards the target) on the path
+  const double size = modelSize(assembler.model());
   VectorXd previous;
   for (int inc = 1; inc <= options.arc.max_increments; ++inc) {
     if (sign * (target - state.load_factor) <= 1e-12 * std::max(1.0, std::abs(target))) break;
@@ -187,6 +209,12 @@ StaticReport solveArcLength(const model::Assembler& assembler, model::State& sta
       s << "increment " << inc << "  landed on load factor " << target << " by load control";
       log.say(s.str());
       break;
+    }
+    const double largest = state.displacement.cwiseAbs().maxCoeff();
+    if (size > 0.0 && !(largest < kRunaway * size)) {
+      const double reached = state.load_factor;
+      state = converged;
+      throw ConvergenceError(runaway(target, reached, peak, largest, size), rec);
     }
     previous = du;
     if (sign * (state.load_factor - peak) > 0.0) peak = state.load_factor;

@@ -35,6 +35,11 @@ bool NewtonTrace::diverging() const {
   return residuals_.back() > 10.0 * least;
 }
 
+bool NewtonTrace::lost() const {
+  if (residuals_.size() < 3 || !std::isfinite(residuals_.back())) return false;
+  return diverging() || residuals_.back() > 0.1 * residuals_.front();
+}
+
 std::string NewtonTrace::diagnosis(const SolveLog& log) const {
   if (residuals_.empty()) return "";
   std::ostringstream s;

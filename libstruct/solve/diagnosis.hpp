@@ -34,7 +34,10 @@ class NewtonTrace {
   // 4e+2) ...", "the residual stalls at ..." or "the iterations converge too slowly ...".
   // Empty when nothing was recorded.
   std::string diagnosis(const SolveLog& log) const;
+  // The residual grows (ends above ten times the least seen) ...
   bool diverging() const;
+  // ... or ends above a tenth of where it started: the iterations get nowhere (a finite residual).
+  bool lost() const;
 
  private:
   std::vector<double> residuals_;

@@ -28,7 +28,8 @@ bool converged(const Convergence& c, double displacement_norm, double residual_n
                double residual_floor) {
   const bool displacement_ok = !c.use_displacement || displacement_norm < c.displacement_tolerance;
   const bool residual_ok =
-      !c.use_residual || residual_norm < std::max(c.residual_tolerance, residual_floor);
+      !c.use_residual ||
+      residual_norm < std::max(c.residual_tolerance, std::min(residual_floor, kFloorLimit));
   return displacement_ok && residual_ok;
 }
 

@@ -207,7 +207,7 @@ void advance(NewmarkStepper& stepper, model::State& state, double h, int depth,
            "nor stiffness";
     else
       s << stepper.trace().diagnosis(log);
-    if (stepper.trace().diverging())
+    if (stepper.trace().lost())
       s << " (a displacement running away there is a motion nothing resists: a mechanism, a "
            "slack line, or a load the structure cannot carry)";
     throw ConvergenceError(s.str(), rec);

@@ -24,12 +24,17 @@ std::string failure(const StaticOptions& o, const IterationRecord& r, const std:
   return s.str();
 }
 
-// What a diverging increment most likely means: a load past the largest the structure carries,
+// What a failed increment most likely means: a mechanism under load when its tangent was
+// singular, else, when the iterations get nowhere, a load past the largest the structure carries,
 // which smaller increments cannot pass and arc-length control finds.
-std::string divergence(const NewtonTrace& trace, const SolveLog& log, double converged_factor) {
+std::string divergence(const NewtonTrace& trace, const SolveLog& log, double converged_factor,
+                       bool singular_tangent) {
   std::ostringstream s;
   s << trace.diagnosis(log);
-  if (trace.diverging())
+  if (singular_tangent)
+    s << " (the tangent was singular: a mechanism, a motion that no support or stiffness holds, "
+         "driven by the load)";
+  else if (trace.lost())
     s << " (the load may exceed what the structure carries: it was in equilibrium at load factor "
       << converged_factor << "; smaller increments, or arc-length control, which follows the "
       << "path past a limit point, tell whether it does)";
@@ -41,8 +46,10 @@ std::string divergence(const NewtonTrace& trace, const SolveLog& log, double con
 // diagonal shift (1e-10 of the mean diagonal) lets the solve go on, and the following Newton
 // iterations, on the exact residual, remove its effect. A real mechanism under load still fails
 // to converge and is reported.
-bool factorizeRegularised(LinearSolver& linear, model::SparseMatrix& K, const SolveLog& log) {
+bool factorizeRegularised(LinearSolver& linear, model::SparseMatrix& K, const SolveLog& log,
+                          bool& regularised) {
   if (linear.factorize(K)) return true;
+  regularised = true;
   const double shift = 1e-10 * K.diagonal().cwiseAbs().mean();
   if (!(shift > 0.0)) return false;
   K.diagonal().array() += shift;
@@ -75,6 +82,7 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
     bool done = false;
     Eigen::VectorXd du, previous_residual;
     NewtonTrace trace;
+    bool regularised = false;  // a tangent of this increment was singular
     for (int it = 0; it <= options.max_iterations; ++it) {
       const bool update = options.flavour == NewtonFlavour::Full || it == 0 ||
                           it % std::max(1, options.stiffness_update) == 0;
@@ -95,7 +103,7 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
       if (update) {
         ++updates;
         if (options.pressure_load_stiffness) assembler.subtractLoadStiffness(state, K);
-        if (!factorizeRegularised(linear, K, log)) {
+        if (!factorizeRegularised(linear, K, log, regularised)) {
           state = converged_state;
           throw ConvergenceError(
               failure(options, rec, "has a singular tangent",
@@ -114,9 +122,10 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
     }
     if (!done) {
       state = converged_state;
-      throw ConvergenceError(failure(options, rec, "did not converge",
-                                     divergence(trace, log, converged_state.load_factor)),
-                             rec);
+      throw ConvergenceError(
+          failure(options, rec, "did not converge",
+                  divergence(trace, log, converged_state.load_factor, regularised)),
+          rec);
     }
     report.increments.push_back(
         {inc, state.load_factor, rec.iteration, updates, rec.displacement_norm, rec.residual_norm});

@@ -52,20 +52,28 @@ std::string stepFailure(int step, double C, int retries, const NewtonTrace& trac
   return s.str();
 }
 
-// Why the schedule ran out of steps: still moving, or settled but out of balance.
+// Why the schedule ran out of steps: the load never balanced (a mechanism), still moving, or
+// settled but out of balance.
 std::string notSettled(const RelaxationOptions& o, const RelaxationReport& r,
                        const LargestMove& move, const SolveLog& log) {
   std::ostringstream s;
   s << "viscous relaxation did not reach equilibrium in " << o.max_steps << " steps: ";
-  if (r.change_ratio >= o.tolerance)
+  if (r.residual_norm > 0.5)
+    s << "the load stays unbalanced (residual " << r.residual_norm
+      << " of the largest force) while the structure keeps moving (the largest change of the last "
+         "step, "
+      << move.value << ", at " << dofName(log, move.node, move.component)
+      << "): a mechanism, a motion that no support or stiffness resists, driven by the load";
+  else if (r.change_ratio >= o.tolerance)
     s << "still moving (change " << r.change_ratio << " in the last step, tolerance " << o.tolerance
       << "; the largest, " << move.value << ", at " << dofName(log, move.node, move.component)
-      << ")";
+      << "); more steps, a smaller damping or a static step after it may finish";
   else
     s << "the motion has settled (change " << r.change_ratio << ") but the residual, "
       << r.residual_norm << ", is above " << o.residual_tolerance << ": the damping, "
-      << r.final_damping << ", holds the structure short of equilibrium";
-  s << "; more steps, a smaller damping or a static step after it may finish";
+      << r.final_damping
+      << ", holds the structure short of equilibrium; more steps, a smaller damping or a static "
+         "step after it may finish";
   return s.str();
 }
 
