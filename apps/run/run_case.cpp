@@ -94,7 +94,7 @@ class Runner {
 
  private:
   ResultFrame modes(int i, const model::State& state) {
-    const solve::ModalResult r = solve::naturalModes(assembler_, state, c_.steps[i].modes);
+    const solve::ModalResult r = solve::naturalModes(assembler_, state, c_.steps[i].modes, slog_);
     ResultFrame f = frame(i, c_.steps[i].name, state);
     f.frequencies = r.omega;
     f.mode_shapes = r.shapes;
