@@ -45,8 +45,8 @@ struct SummarySpec {
     Position,           // component of a node's current position
     Reaction,           // component of a support reaction
     ReactionMagnitude,  // |reaction| at a node
-    EndTension,         // axial force at one end of an element
-    MaxTension,         // largest axial force over all integration points and element ends
+    EndTension,         // force on one end point of an element (its nodal force balance)
+    MaxTension,         // largest end tension over all elements
     Frequency,          // omega of mode `mode` (1-based) of a modes step, rad/s
     ResultantMax,       // larger principal membrane stress resultant, mean over the element's
                         // integration points (force per current length)

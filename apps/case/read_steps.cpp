@@ -1,6 +1,7 @@
 // steps: of a case file, in order; each is `relax: {...}`, `static: {...}`, `modes: {...}` or
 // `dynamic: {...}` and maps onto solve::RelaxationOptions, solve::StaticOptions,
 // solve::ModalOptions or solve::DynamicOptions.
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -194,11 +195,24 @@ void readSchedule(CaseBuilder& b, Fields& f, std::vector<solve::TimeSegment>& sc
   }
 }
 
+// True when an earlier step of the case sets a load factor (relax, static and dynamic steps do;
+// modes steps do not).
+bool loadFactorSetBefore(const CaseBuilder& b) {
+  return std::any_of(b.c.steps.begin(), b.c.steps.end(),
+                     [](const StepSpec& s) { return s.kind != StepSpec::Kind::Modes; });
+}
+
 // Newmark (Eq. 4.55-4.63), or HHT-alpha, with Newton iterations in every time step.
 void readDynamic(CaseBuilder& b, Fields& f, StepSpec& step) {
   Input& in = b.in;
   solve::DynamicOptions& o = step.dynamic;
   readSchedule(b, f, o.schedule);
+  // The load factor held through the step: given, or the one the previous step left; 1 when no
+  // earlier step sets one, so that gravity and the loads without a history act.
+  if (const YAML::Node* n = f.find("load_factor"))
+    o.load_factor = in.quantity(*n, f.path("load_factor"), kind::kNumber);
+  else if (!loadFactorSetBefore(b))
+    o.load_factor = 1.0;
   const YAML::Node* gamma = f.find("gamma");
   const YAML::Node* beta = f.find("beta");
   if (gamma)  // below 1/2 the scheme amplifies: negative numerical damping
@@ -250,8 +264,8 @@ const std::vector<std::string>& keysOf(StepSpec::Kind kind) {
             "max_increments", "pressure_stiffness"});
   static const std::vector<std::string> modes = {"name", "count", "shift", "mass", "tolerance"};
   static const std::vector<std::string> dynamic =
-      with({"name", "schedule", "dt", "steps", "gamma", "beta", "hht_alpha", "mass", "rayleigh",
-            "max_step_cuts", "output_every"});
+      with({"name", "load_factor", "schedule", "dt", "steps", "gamma", "beta", "hht_alpha", "mass",
+            "rayleigh", "max_step_cuts", "output_every"});
   switch (kind) {
     case StepSpec::Kind::Relax:
       return relax;

@@ -13,8 +13,9 @@ using Quantity = SummarySpec::Quantity;
 // of a modes step, or the whole model.
 enum class Target { Node, ElementEnd, Membrane, Mode, Model };
 
-// The unit a quantity is reported in.
-enum class Measure { Length, Force, ForcePerLength, AngularFrequency };
+// The unit a quantity is reported in. A support reaction of an axisymmetric model is per radian
+// of circumference, like every force of its meridian (a hoop cable's tension is a whole force).
+enum class Measure { Length, Force, Reaction, ForcePerLength, AngularFrequency };
 
 struct QuantityInfo {
   Quantity quantity;
@@ -23,13 +24,22 @@ struct QuantityInfo {
   Target target;
 };
 
-std::string unitOf(Measure m, UnitSystem system) {
+// True when the model is an axisymmetric meridian (it has axisymmetric membranes or hoop cables).
+bool axisymmetric(const CaseBuilder& b) {
+  return std::any_of(b.element_types.begin(), b.element_types.end(), [](const std::string& t) {
+    return t == "axisymmetric_membrane" || t == "hoop_cable";
+  });
+}
+
+std::string unitOf(Measure m, UnitSystem system, bool per_radian) {
   const UnitNames units = unitNames(system);
   switch (m) {
     case Measure::Length:
       return units.length;
     case Measure::Force:
       return units.force;
+    case Measure::Reaction:
+      return per_radian ? units.force + "/rad" : units.force;
     case Measure::ForcePerLength:
       return units.force + "/" + units.length;
     case Measure::AngularFrequency:
@@ -46,10 +56,10 @@ const std::vector<std::pair<std::string, QuantityInfo>>& quantities() {
       {"position_x", {Quantity::Position, 0, Measure::Length, Target::Node}},
       {"position_y", {Quantity::Position, 1, Measure::Length, Target::Node}},
       {"position_z", {Quantity::Position, 2, Measure::Length, Target::Node}},
-      {"reaction_x", {Quantity::Reaction, 0, Measure::Force, Target::Node}},
-      {"reaction_y", {Quantity::Reaction, 1, Measure::Force, Target::Node}},
-      {"reaction_z", {Quantity::Reaction, 2, Measure::Force, Target::Node}},
-      {"reaction_magnitude", {Quantity::ReactionMagnitude, 0, Measure::Force, Target::Node}},
+      {"reaction_x", {Quantity::Reaction, 0, Measure::Reaction, Target::Node}},
+      {"reaction_y", {Quantity::Reaction, 1, Measure::Reaction, Target::Node}},
+      {"reaction_z", {Quantity::Reaction, 2, Measure::Reaction, Target::Node}},
+      {"reaction_magnitude", {Quantity::ReactionMagnitude, 0, Measure::Reaction, Target::Node}},
       {"end_tension", {Quantity::EndTension, 0, Measure::Force, Target::ElementEnd}},
       {"max_tension", {Quantity::MaxTension, 0, Measure::Force, Target::Model}},
       {"resultant_max", {Quantity::ResultantMax, 0, Measure::ForcePerLength, Target::Membrane}},
@@ -173,7 +183,7 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   if (!rejectUnused(b, f, q->Scalar(), info.target)) return std::nullopt;
   s.quantity = info.quantity;
   s.component = info.component;
-  s.unit = unitOf(info.measure, b.in.units);
+  s.unit = unitOf(info.measure, b.in.units, axisymmetric(b));
   if (info.target == Target::Node) {
     const YAML::Node* n = f.require("node");
     const auto node = n ? nodeRef(b, *n, f.path("node")) : std::nullopt;

@@ -16,6 +16,7 @@ constexpr double kSlug = kPoundForce / kFoot;           // kg: 1 lbf s^2 / ft
 constexpr double kPsi = kPoundForce / (kInch * kInch);  // Pa
 constexpr double kPsf = kPoundForce / (kFoot * kFoot);  // Pa
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kStandardGravity = 9.80665;  // m/s^2, exact (CGPM 1901): kgf and tf
 
 constexpr Dimension kDimensionless{0, 0, 0};
 constexpr Dimension kL{0, 1, 0}, kM{1, 0, 0}, kT{0, 0, 1};
@@ -27,31 +28,49 @@ struct BaseUnit {
   Dimension dimension;
 };
 
+// SI prefixes where they are in common use; "µ" (U+00B5) and "μ" (U+03BC) as well as "u".
 constexpr BaseUnit kBaseUnits[] = {
     {"m", 1.0, kL},
+    {"um", 1e-6, kL},
+    {"µm", 1e-6, kL},
+    {"μm", 1e-6, kL},
     {"mm", 1e-3, kL},
     {"cm", 1e-2, kL},
     {"km", 1e3, kL},
     {"in", kInch, kL},
     {"ft", kFoot, kL},
+    {"nmi", 1852.0, kL},  // nautical mile, exact
     {"kg", 1.0, kM},
+    {"mg", 1e-6, kM},
     {"g", 1e-3, kM},
     {"t", 1e3, kM},
     {"slug", kSlug, kM},
     {"lbm", kPoundMass, kM},
     {"s", 1.0, kT},
+    {"ms", 1e-3, kT},
+    {"us", 1e-6, kT},
+    {"µs", 1e-6, kT},
+    {"μs", 1e-6, kT},
     {"min", 60.0, kT},
     {"h", 3600.0, kT},
+    {"d", 86400.0, kT},
     {"N", 1.0, kF},
+    {"mN", 1e-3, kF},
     {"kN", 1e3, kF},
     {"MN", 1e6, kF},
+    {"GN", 1e9, kF},
+    {"kgf", kStandardGravity, kF},
+    {"tf", 1e3 * kStandardGravity, kF},  // tonne-force, the unit of a mooring line's MBL
     {"lbf", kPoundForce, kF},
     {"lb", kPoundForce, kF},
     {"kip", 1e3 * kPoundForce, kF},
     {"Pa", 1.0, kP},
+    {"hPa", 1e2, kP},
     {"kPa", 1e3, kP},
     {"MPa", 1e6, kP},
     {"GPa", 1e9, kP},
+    {"mbar", 1e2, kP},
+    {"bar", 1e5, kP},
     {"psi", kPsi, kP},
     {"psf", kPsf, kP},
     {"ksi", 1e3 * kPsi, kP},
@@ -59,6 +78,7 @@ constexpr BaseUnit kBaseUnits[] = {
     {"rad", 1.0, kDimensionless},
     {"deg", kPi / 180.0, kDimensionless},
     {"Hz", 1.0, {0, 0, -1}},
+    {"kHz", 1e3, {0, 0, -1}},
 };
 
 constexpr QuantityKind kNamedKinds[] = {
@@ -137,7 +157,7 @@ class UnitParser {
       ++pos_;
     } else {
       const size_t start = pos_;
-      while (pos_ < text_.size() && std::isalpha(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+      while (pos_ < text_.size() && isNameByte(static_cast<unsigned char>(text_[pos_]))) ++pos_;
       u = lookup(text_.substr(start, pos_ - start));
     }
     if (peek() == '^') {
@@ -166,6 +186,8 @@ class UnitParser {
     return e;
   }
 
+  // A letter, or a byte of a UTF-8 sequence (the micro signs).
+  static bool isNameByte(unsigned char c) { return std::isalpha(c) || c >= 0x80; }
   char peek() const { return pos_ < text_.size() ? text_[pos_] : '\0'; }
   void skipSpaces() {
     while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;

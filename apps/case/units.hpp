@@ -6,9 +6,11 @@
 // A unit expression is a product of base units with optional integer exponents, '*' or a space
 // multiplying and '/' dividing the factor that follows it; parentheses group:
 //   "lbf/ft^2", "slug/ft^3", "kg m^-3", "lbf s^2/ft", "N/(m s)", "1/s".
-// Base units: m mm cm km in ft | kg g t slug lbm | s min h | N kN MN lbf lb kip |
-// Pa kPa MPa GPa psi psf ksi ksf | rad deg Hz. Conversion factors are exact: 1 ft = 0.3048 m,
-// 1 in = 0.0254 m, 1 lbm = 0.45359237 kg, 1 lbf = 4.4482216152605 N, 1 slug = 1 lbf s^2/ft.
+// Base units: m um mm cm km in ft nmi | kg mg g t slug lbm | s ms us min h d |
+// N mN kN MN GN kgf tf lbf lb kip | Pa hPa kPa MPa GPa mbar bar psi psf ksi ksf | rad deg Hz kHz
+// (um and us also as µm, µs and μm, μs). Conversion factors are exact: 1 ft = 0.3048 m,
+// 1 in = 0.0254 m, 1 nmi = 1852 m, 1 lbm = 0.45359237 kg, 1 lbf = 4.4482216152605 N,
+// 1 slug = 1 lbf s^2/ft, 1 kgf = 9.80665 N, 1 tf = 1000 kgf, 1 bar = 1e5 Pa, 1 d = 86400 s.
 #include <stdexcept>
 #include <string>
 

@@ -6,8 +6,7 @@
 namespace flexmoor::app {
 
 // Displacement, position (reference + displacement), reaction component, reaction magnitude,
-// end tension or the largest tension over all integration points and element ends, times
-// spec.scale. Throws std::out_of_range when the spec names a node, element, end or component the
+// end tension or the largest end tension over all elements, times spec.scale. Throws std::out_of_range when the spec names a node, element, end or component the
 // model or frame does not have.
 double evaluateSummary(const SummarySpec& spec, const model::Model& model,
                        const ResultFrame& frame);

@@ -43,6 +43,7 @@ class Runner {
   Runner(const Case& c, const std::string& netcdf_path, std::ostream& log)
       : c_(c), log_(log), assembler_(*c.model), writer_(netcdf_path, *c.model, c) {
     slog_.message = [&log](const std::string& s) { log << "  " << s << std::endl; };
+    slog_.node_name = [&c](int n) { return "node " + std::to_string(c.node_ids[n]); };
   }
 
   // Runs step i from `state`; returns its closing frame. Throws ConvergenceError with `state`
@@ -92,7 +93,7 @@ class Runner {
 
  private:
   ResultFrame modes(int i, const model::State& state) {
-    const solve::ModalResult r = solve::naturalModes(assembler_, state, c_.steps[i].modes);
+    const solve::ModalResult r = solve::naturalModes(assembler_, state, c_.steps[i].modes, slog_);
     ResultFrame f = frame(i, c_.steps[i].name, state);
     f.frequencies = r.omega;
     f.mode_shapes = r.shapes;

@@ -73,24 +73,31 @@ void Assembler::internalForce(const State& state, Eigen::VectorXd& force, Sparse
   }
 }
 
+void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load) const {
+  load.setZero(model_.element(e).dofCount());
+  Eigen::VectorXd p;
+  if (!model_.gravity().isZero()) {
+    model_.element(e).bodyLoad(context(state, e), model_.gravity(), p);
+    load += p;
+  }
+  for (const auto& line : model_.lineLoads()) {
+    model_.element(e).lineLoad(context(state, e), *line, p);
+    load += p;
+  }
+  load *= state.load_factor;
+}
+
 void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
   load.setZero(3 * model_.nodeCount());
   for (const NodalLoad& p : model_.nodalLoads())
-    if (!p.history) load.segment<3>(3 * p.node) += p.force;
-  const bool gravity = !model_.gravity().isZero();
+    if (!p.history) load.segment<3>(3 * p.node) += state.load_factor * p.force;
   Eigen::VectorXd p;
-  for (int e = 0; e < model_.elementCount(); ++e) {
-    const auto& index = full_index_[e];
-    if (gravity) {
-      model_.element(e).bodyLoad(context(state, e), model_.gravity(), p);
+  if (!model_.gravity().isZero() || !model_.lineLoads().empty())
+    for (int e = 0; e < model_.elementCount(); ++e) {
+      elementLoad(state, e, p);
+      const auto& index = full_index_[e];
       for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
     }
-    for (const auto& line : model_.lineLoads()) {
-      model_.element(e).lineLoad(context(state, e), *line, p);
-      for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
-    }
-  }
-  load *= state.load_factor;
   for (const NodalLoad& p : model_.nodalLoads())
     if (p.history) load.segment<3>(3 * p.node) += p.history->value(state.time) * p.force;
   for (const PressureLoad& pressure : model_.pressures()) {
@@ -179,11 +186,54 @@ void Assembler::applyPrescribed(State& state) const {
       }
 }
 
+// A line element (cable or spring: two ends, axial forces, no membrane resultants) reports at
+// each end the force its end node exerts on it, from its own nodal force balance: internal force
+// f, minus its consistent external load p (gravity, line loads), plus its inertia M u'' when the
+// structure accelerates (Rayleigh damping, a property of the whole model, is left out). That is
+// the force on the end point a mooring user reads (a fairlead's, an anchor's), and at a support
+// that only this element joins it is the reaction. Its magnitude is the end tension; a force that
+// pushes the end towards the element's next node is a compression and is reported negative. The
+// axial force from the strain at xi = +-1 converges more slowly and can be far off when EA / T is
+// large (a curved quadratic element cannot keep its stretch uniform); the integration points keep
+// their strain-based tension.
+void Assembler::setEndTensions(const State& state, int e, element::ElementResult& r) const {
+  const element::Element& element = model_.element(e);
+  Eigen::VectorXd f, p;
+  element.internalForce(context(state, e), f, nullptr);
+  elementLoad(state, e, p);
+  f -= p;
+  const auto& index = full_index_[e];
+  Eigen::VectorXd a(index.size());
+  for (size_t k = 0; k < index.size(); ++k) a(k) = state.acceleration.data()[index[k]];
+  if (!a.isZero(0.0)) {
+    Eigen::MatrixXd m;
+    element.mass(context(state, e), element::MassKind::Consistent, m);
+    f += m * a;
+  }
+  const std::vector<int>& nodes = element.nodes();
+  const int last = static_cast<int>(nodes.size()) - 1;
+  const auto position = [&](int local) -> Eigen::Vector3d {
+    return model_.reference().col(nodes[local]) + state.displacement.col(nodes[local]);
+  };
+  for (const int end : {0, 1}) {
+    const int local = end == 0 ? 0 : last;
+    const int next = end == 0 ? 1 : last - 1;
+    const Eigen::Vector3d force = f.segment<3>(3 * local);
+    const double magnitude = force.norm();
+    r.end_tension[end] = force.dot(position(next) - position(local)) > 0.0 ? -magnitude : magnitude;
+  }
+}
+
 std::vector<element::ElementResult> Assembler::elementResults(const State& state) const {
   std::vector<element::ElementResult> results;
   results.reserve(model_.elementCount());
-  for (int e = 0; e < model_.elementCount(); ++e)
+  for (int e = 0; e < model_.elementCount(); ++e) {
     results.push_back(model_.element(e).result(context(state, e)));
+    element::ElementResult& r = results.back();
+    const bool line = model_.element(e).nodes().size() >= 2 && !r.point_tension.empty() &&
+                      r.point_resultant.empty();
+    if (line) setEndTensions(state, e, r);
+  }
   return results;
 }
 

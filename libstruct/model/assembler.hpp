@@ -42,6 +42,9 @@ class Assembler {
   // history at the state's time (with its velocity and acceleration).
   void applyPrescribed(State& state) const;
 
+  // Every element's result at the state. A line element's end tensions are the forces on its end
+  // nodes from its nodal force balance (see setEndTensions); its point tensions stay the
+  // element's own, from the strain.
   std::vector<element::ElementResult> elementResults(const State& state) const;
 
  private:
@@ -52,6 +55,9 @@ class Assembler {
   void scatterMatrix(int e, const ElementMatrix& k, SparseMatrix& K) const;
 
   double pressureFactor(const PressureLoad& load, const State& state) const;
+  // Element e's own share of the proportional loads (gravity, line loads) at the load factor.
+  void elementLoad(const State& state, int e, Eigen::VectorXd& load) const;
+  void setEndTensions(const State& state, int e, element::ElementResult& r) const;
 
   const Model& model_;
   SparseMatrix pattern_;

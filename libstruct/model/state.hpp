@@ -7,12 +7,28 @@ namespace flexmoor::model {
 
 using NodalField = Eigen::Matrix3Xd;
 
+// What a time integration leaves in the state for the next one to continue from. A dynamic step
+// that follows another with the same load factor and the same equation of motion (mass, damping,
+// HHT alpha) continues from the accepted u'' instead of solving for it again, so that a run split
+// into several steps gives the one-step result to round-off. Whatever else moves the state (a
+// static or relaxation step) clears it, and the next integration starts from equilibrium.
+struct MotionRecord {
+  bool valid = false;        // u'' is that of an accepted time step
+  double load_factor = 0.0;  // the load factor it was accepted at
+  int mass_kind = 0;         // element::MassKind, as an int
+  double rayleigh_mass = 0.0;
+  double rayleigh_stiffness = 0.0;
+  double hht_alpha = 0.0;
+  double force_scale = 0.0;  // the largest force norm seen so far (the residual test's scale)
+};
+
 struct State {
   NodalField displacement;
   NodalField velocity;
   NodalField acceleration;
   double time = 0.0;
   double load_factor = 0.0;
+  MotionRecord motion;
 
   explicit State(int node_count = 0)
       : displacement(NodalField::Zero(3, node_count)),

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "libstruct/solve/diagnosis.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
 
@@ -36,9 +37,13 @@ class ArcLengthPath {
     du_total = dlambda * dut;
     const double lambda0 = state.load_factor;
     apply(state, u0, du_total, lambda0 + dlambda);
+    trace_.start();
+    trace_.increment(a_.model(), du_total);
     for (int it = 1; it <= o_.max_iterations; ++it) {
       VectorXd R;
-      if (!tangentSolve(state, &R, P, dut)) return false;
+      const bool solved = tangentSolve(state, &R, P, dut);
+      trace_.residual(residual_norm_);
+      if (!solved) return false;
       rec.residual_norm = residual_norm_;
       if (it > 1 &&
           converged(o_.convergence, rec.displacement_norm, rec.residual_norm, residual_floor_))
@@ -57,6 +62,7 @@ class ArcLengthPath {
       // the root that keeps the increment closest to its own direction
       const double x = (base + r1 * dut).dot(du_total) >= (base + r2 * dut).dot(du_total) ? r1 : r2;
       const VectorXd du = duR + x * dut;
+      trace_.increment(a_.model(), du);
       du_total += du;
       dlambda += x;
       apply(state, u0, du_total, lambda0 + dlambda);
@@ -66,6 +72,8 @@ class ArcLengthPath {
     }
     return false;
   }
+
+  const NewtonTrace& trace() const { return trace_; }
 
  private:
   // Factorises the tangent at `state` and solves K dut = P (the reference load at factor 1);
@@ -101,28 +109,72 @@ class ArcLengthPath {
   LinearSolver linear_;
   double residual_norm_ = 0.0;
   double residual_floor_ = 0.0;  // round-off floor at the last tangent (Residual::floor)
+  NewtonTrace trace_;            // of the last increment tried
 };
 
-void refuseDisplacementControl(const model::Model& m) {
+void refuseDisplacementControl(const model::Model& m, const SolveLog& log) {
   for (int n = 0; n < m.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k)
       if (m.isConstrained(n, k) && m.prescribed(n, k) != 0.0 && !m.motion(n, k))
         throw std::invalid_argument(
             "arc-length control follows proportional loads; a prescribed support displacement "
-            "needs load control (node " +
-            std::to_string(n + 1) + ")");
+            "needs load control (" +
+            dofName(log, n, k) + ")");
+}
+
+// Why the path stopped short of the target: it turned back at a limit point (the structure
+// carries no more), or it crept on in displacement with the load factor barely rising.
+std::string shortOfTarget(double target, double reached, double peak, int sign, int increments,
+                          const model::NodalField& u) {
+  std::ostringstream s;
+  s << "arc-length path did not reach load factor " << target << " in " << increments
+    << " increments: ";
+  if (sign * (peak - reached) > 1e-6 * std::max(1.0, std::abs(peak)))
+    s << "the load factor peaked at " << peak << " and fell to " << reached
+      << ": the structure carries at most about " << peak
+      << " times the reference load (a limit point), short of the target";
+  else
+    s << "the load factor crept to " << reached << " while the displacements grew to "
+      << u.cwiseAbs().maxCoeff()
+      << " (largest component): a load near or beyond what the structure carries, or a "
+         "mechanism, lets the path run away in displacement; more increments or a larger first "
+         "increment reach the target if it is carried";
+  return s.str();
+}
+
+// Displacements past this many times the model's size mean the path has run away: the residual
+// test means nothing there (its round-off floor grows with the coordinates, Residual::floor), so
+// the increments "converge" with any residual, and a load the structure cannot carry would end in
+// a garbage equilibrium (Example 3's tube past its limit pressure: 5e16 ft, exit 0, before issue 9).
+constexpr double kRunaway = 1e3;
+
+// The diagonal of the reference configuration's bounding box.
+double modelSize(const model::Model& m) {
+  if (m.nodeCount() == 0) return 0.0;
+  return (m.reference().rowwise().maxCoeff() - m.reference().rowwise().minCoeff()).norm();
+}
+
+std::string runaway(double target, double reached, double peak, double displacement, double size) {
+  std::ostringstream s;
+  s << "arc-length path runs away: at load factor " << reached << " the displacements reach "
+    << displacement << ", over " << kRunaway << " times the model's size (" << size
+    << "), with the load factor never past " << peak << ": the structure cannot carry load factor "
+    << target << "; the most it carries is about " << peak << " times the reference load";
+  return s.str();
 }
 
 }  // namespace
 
 StaticReport solveArcLength(const model::Assembler& assembler, model::State& state,
                             const StaticOptions& options, const SolveLog& log) {
-  refuseDisplacementControl(assembler.model());
+  refuseDisplacementControl(assembler.model(), log);
   StaticReport report;
   ArcLengthPath path(assembler, options);
   const double target = options.load_factor;
   const int sign = target >= state.load_factor ? 1 : -1;
-  double ds = -1.0;  // set by the first predictor
+  double ds = -1.0;                 // set by the first predictor
+  double peak = state.load_factor;  // the largest load factor (towards the target) on the path
+  const double size = modelSize(assembler.model());
   VectorXd previous;
   for (int inc = 1; inc <= options.arc.max_increments; ++inc) {
     if (sign * (target - state.load_factor) <= 1e-12 * std::max(1.0, std::abs(target))) break;
@@ -139,7 +191,7 @@ StaticReport solveArcLength(const model::Assembler& assembler, model::State& sta
         std::ostringstream s;
         s << "arc-length increment " << inc << " from load factor " << converged.load_factor
           << " did not converge even with arc length " << ds << " (residual " << rec.residual_norm
-          << ")";
+          << "): " << path.trace().diagnosis(log);
         throw ConvergenceError(s.str(), rec);
       }
     }
@@ -153,11 +205,19 @@ StaticReport solveArcLength(const model::Assembler& assembler, model::State& sta
       const StaticReport landing = solveStatic(assembler, state, last, {});
       report.increments.push_back(landing.increments.back());
       report.increments.back().increment = inc;
-      log.say("increment " + std::to_string(inc) + "  landed on load factor " +
-              std::to_string(target) + " by load control");
+      std::ostringstream s;
+      s << "increment " << inc << "  landed on load factor " << target << " by load control";
+      log.say(s.str());
       break;
     }
+    const double largest = state.displacement.cwiseAbs().maxCoeff();
+    if (size > 0.0 && !(largest < kRunaway * size)) {
+      const double reached = state.load_factor;
+      state = converged;
+      throw ConvergenceError(runaway(target, reached, peak, largest, size), rec);
+    }
     previous = du;
+    if (sign * (state.load_factor - peak) > 0.0) peak = state.load_factor;
     report.increments.push_back({inc, state.load_factor, rec.iteration, rec.iteration,
                                  rec.displacement_norm, rec.residual_norm});
     std::ostringstream s;
@@ -170,8 +230,8 @@ StaticReport solveArcLength(const model::Assembler& assembler, model::State& sta
   }
   if (sign * (target - state.load_factor) > 1e-12 * std::max(1.0, std::abs(target))) {
     IterationRecord rec{static_cast<int>(report.increments.size()), 0, state.load_factor, 0, 0};
-    throw ConvergenceError("arc-length path did not reach load factor " + std::to_string(target) +
-                               " in " + std::to_string(options.arc.max_increments) + " increments",
+    throw ConvergenceError(shortOfTarget(target, state.load_factor, peak, sign,
+                                         options.arc.max_increments, state.displacement),
                            rec);
   }
   return report;

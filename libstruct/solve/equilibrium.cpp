@@ -28,7 +28,8 @@ bool converged(const Convergence& c, double displacement_norm, double residual_n
                double residual_floor) {
   const bool displacement_ok = !c.use_displacement || displacement_norm < c.displacement_tolerance;
   const bool residual_ok =
-      !c.use_residual || residual_norm < std::max(c.residual_tolerance, residual_floor);
+      !c.use_residual ||
+      residual_norm < std::max(c.residual_tolerance, std::min(residual_floor, kFloorLimit));
   return displacement_ok && residual_ok;
 }
 
@@ -36,6 +37,14 @@ double displacementNorm(const model::Assembler& assembler, const Eigen::VectorXd
                         const model::NodalField& u) {
   const double u_norm = assembler.restrictToFree(asVector(u)).norm();
   return u_norm > 0.0 ? du.norm() / u_norm : du.norm();
+}
+
+void putAtRest(const model::Assembler& assembler, model::State& state) {
+  const model::Model& m = assembler.model();
+  for (int n = 0; n < m.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k)
+      if (m.equation(n, k) >= 0) state.velocity(k, n) = state.acceleration(k, n) = 0.0;
+  state.motion = {};
 }
 
 }  // namespace flexmoor::solve

@@ -21,14 +21,24 @@ struct Residual {
 Residual outOfBalance(const model::Assembler& assembler, const model::State& state,
                       model::SparseMatrix* K);
 
+// A round-off floor above this means the coordinates have run away (a mechanism under load
+// pushed to 1e10 m makes the floor 5): the residual test then still asks for this much, so such a
+// state is never taken for an equilibrium. Real floors stay far below (5e-7 for a 10,000-element
+// steel chain).
+inline constexpr double kFloorLimit = 1e-4;
+
 // Eq. 5.1 and/or the residual test, as the options ask; the residual test never asks for less
-// than the round-off floor allows.
+// than the round-off floor allows, up to kFloorLimit.
 bool converged(const Convergence& c, double displacement_norm, double residual_norm,
                double residual_floor);
 
 // Eq. 5.1: sqrt(sum du^2 / sum u^2) over the free dofs (|du| when u vanishes).
 double displacementNorm(const model::Assembler& assembler, const Eigen::VectorXd& du,
                         const model::NodalField& u);
+
+// A static or relaxation step finds the structure at rest: the free dofs' velocity and
+// acceleration are set to zero and the motion record is cleared (the supports keep theirs).
+void putAtRest(const model::Assembler& assembler, model::State& state);
 
 // Displacement of all dofs as one full vector (3 * node + component).
 inline Eigen::Map<const Eigen::VectorXd> asVector(const model::NodalField& field) {

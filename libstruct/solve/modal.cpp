@@ -9,6 +9,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "libstruct/solve/diagnosis.hpp"
 #include "libstruct/solve/linear_solver.hpp"
 
 namespace flexmoor::solve {
@@ -66,14 +67,26 @@ void sparseModes(const model::SparseMatrix& K, const model::SparseMatrix& M, int
   vectors = eigs.eigenvectors();
 }
 
+// A free dof whose mass is not positive makes M singular or indefinite: name the first.
+void requireMass(const model::Model& m, const model::SparseMatrix& M, const SolveLog& log) {
+  const Eigen::VectorXd diagonal = M.diagonal();
+  for (int n = 0; n < m.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k)
+      if (const int eq = m.equation(n, k); eq >= 0 && !(diagonal(eq) > 0.0))
+        throw std::runtime_error(
+            "frequency analysis: the mass matrix is not positive definite: " + dofName(log, n, k) +
+            " has no mass (every element on it has zero density, or none carries it)");
+}
+
 }  // namespace
 
 ModalResult naturalModes(const model::Assembler& assembler, const model::State& state,
-                         const ModalOptions& options) {
+                         const ModalOptions& options, const SolveLog& log) {
   model::SparseMatrix K, M;
   Eigen::VectorXd F;
   assembler.internalForce(state, F, &K);
   assembler.mass(state, options.mass, M);
+  requireMass(assembler.model(), M, log);
   const int n = assembler.equationCount();
   const int modes = std::min(options.modes, n);
   if (modes < 1) throw std::invalid_argument("frequency analysis needs at least one mode");

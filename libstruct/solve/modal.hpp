@@ -7,6 +7,7 @@
 
 #include "libstruct/element/element.hpp"
 #include "libstruct/model/assembler.hpp"
+#include "libstruct/solve/solve_log.hpp"
 
 namespace flexmoor::solve {
 
@@ -24,7 +25,9 @@ struct ModalResult {
   std::vector<model::NodalField> shapes;  // mass-normalised mode shapes, 3 x nodes each
 };
 
+// Throws std::runtime_error when it cannot: a free dof without mass (named with the log's node
+// names), a singular shifted tangent, a Lanczos iteration that does not converge.
 ModalResult naturalModes(const model::Assembler& assembler, const model::State& state,
-                         const ModalOptions& options);
+                         const ModalOptions& options, const SolveLog& log = {});
 
 }  // namespace flexmoor::solve

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "libstruct/solve/diagnosis.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
 
@@ -63,6 +64,8 @@ class NewmarkStepper {
     const bool refresh_each_step =
         o_.flavour == NewtonFlavour::Full || o_.flavour == NewtonFlavour::SelfCorrective ||
         steps_since_update_ + 1 >= std::max(1, o_.stiffness_update) || h != factor_h_;
+    trace_.start();
+    singular_ = false;
     for (int it = 0; it <= o_.max_iterations; ++it) {
       const VectorXd acc = a0 * (u - u_n) - a1 * v_n - a2 * acc_n;           // Eq. 4.57
       const VectorXd v = v_n + h * ((1.0 - gamma_) * acc_n + gamma_ * acc);  // Eq. 4.58
@@ -82,6 +85,7 @@ class NewmarkStepper {
       if (update) floor_ = R.floor * R.scale / scale;
       R.scale = scale;
       rec.residual_norm = R.relative();
+      trace_.residual(rec.residual_norm);
       if (it > 0) {
         if (o_.flavour == NewtonFlavour::SelfCorrective ||  // Eq. 4.20: one solve, accepted
             converged(o_.convergence, rec.displacement_norm, rec.residual_norm, floor_)) {
@@ -101,12 +105,16 @@ class NewmarkStepper {
         Keff_.coeffs() = (1.0 + alpha_) * K.coeffs() + (a0 + c * o_.rayleigh_mass) * M_.coeffs();
         if (o_.rayleigh_stiffness != 0.0)
           Keff_.coeffs() += (c * o_.rayleigh_stiffness) * K0_.coeffs();
-        if (!linear_.factorize(Keff_)) return false;
+        if (!linear_.factorize(Keff_)) {
+          singular_ = true;
+          return false;
+        }
         factor_h_ = h;
         ++report.tangent_updates;
       }
       const VectorXd du = linear_.solve(R.free);
       u += du;
+      trace_.increment(model_, du);
       ++report.iterations;
       rec.iteration = it + 1;
       const double u_norm = u.norm();
@@ -115,9 +123,11 @@ class NewmarkStepper {
     return false;
   }
 
-  // u'' at the start from equilibrium: M a = P - F - C v (free dofs); zero if M is singular.
+  // u'' at the start from equilibrium: M a = P - F - C v - M_p a_p on the free dofs, M_p a_p the
+  // inertia of the prescribed supports' accelerations; zero if M is singular.
   void initialAcceleration(model::State& s) {
     assembler_.applyPrescribed(s);
+    setFree(model_, VectorXd::Zero(model_.equationCount()), s.acceleration);
     VectorXd inertia_full;
     assembler_.inertiaForce(masses_, s, inertia_full);  // prescribed accelerations only
     const VectorXd rhs = outOfBalance(assembler_, s, nullptr).free -
@@ -126,6 +136,39 @@ class NewmarkStepper {
     LinearSolver mass_solver;
     if (mass_solver.factorize(M_)) setFree(model_, mass_solver.solve(rhs), s.acceleration);
   }
+
+  // Continues from a state an earlier integration left, or starts from equilibrium: the accepted
+  // u'' is kept when it was accepted under this load factor and equation of motion (so a run split
+  // into steps gives the one-step result), and solved for otherwise.
+  void start(model::State& s) {
+    const model::MotionRecord& r = s.motion;
+    const bool same = r.valid && r.load_factor == s.load_factor &&
+                      r.mass_kind == static_cast<int>(o_.mass) &&
+                      r.rayleigh_mass == o_.rayleigh_mass &&
+                      r.rayleigh_stiffness == o_.rayleigh_stiffness && r.hht_alpha == alpha_;
+    if (same) {
+      force_scale_ = r.force_scale;
+      assembler_.applyPrescribed(s);
+    } else {
+      initialAcceleration(s);
+    }
+  }
+
+  // What the next integration continues from.
+  model::MotionRecord record(const model::State& s) const {
+    model::MotionRecord r;
+    r.valid = true;
+    r.load_factor = s.load_factor;
+    r.mass_kind = static_cast<int>(o_.mass);
+    r.rayleigh_mass = o_.rayleigh_mass;
+    r.rayleigh_stiffness = o_.rayleigh_stiffness;
+    r.hht_alpha = alpha_;
+    r.force_scale = force_scale_;
+    return r;
+  }
+
+  const NewtonTrace& trace() const { return trace_; }
+  bool singular() const { return singular_; }
 
  private:
   const model::Model& model_;
@@ -139,6 +182,8 @@ class NewmarkStepper {
   int steps_since_update_ = 0;
   double force_scale_ = 0.0;  // largest force norm of the accepted steps
   double floor_ = 0.0;        // round-off floor of the residual at the last tangent
+  NewtonTrace trace_;         // of the last step tried
+  bool singular_ = false;     // the last step tried had a singular effective tangent
 };
 
 // Advances by h, halving on failure down to max_step_cuts levels.
@@ -156,7 +201,15 @@ void advance(NewmarkStepper& stepper, model::State& state, double h, int depth,
     std::ostringstream s;
     s << "time step at t = " << state.time << " s did not converge even with dt = " << h << " s ("
       << rec.iteration << " iterations, displacement norm " << rec.displacement_norm
-      << ", residual " << rec.residual_norm << ")";
+      << ", residual " << rec.residual_norm << "): ";
+    if (stepper.singular())
+      s << "the effective tangent K + M / (beta dt^2) is singular: a free dof has neither mass "
+           "nor stiffness";
+    else
+      s << stepper.trace().diagnosis(log);
+    if (stepper.trace().lost())
+      s << " (a displacement running away there is a motion nothing resists: a mechanism, a "
+           "slack line, or a load the structure cannot carry)";
     throw ConvergenceError(s.str(), rec);
   }
   ++report.cuts;
@@ -175,10 +228,16 @@ DynamicReport integrate(const model::Assembler& assembler, model::State& state,
   const model::Model& m = assembler.model();
   NewmarkStepper stepper(m, assembler, options);
   DynamicReport report;
-  stepper.initialAcceleration(state);
+  if (options.load_factor) state.load_factor = *options.load_factor;
+  stepper.start(state);
+  state.motion = stepper.record(state);
+  const auto accepted = [&](const model::State& s) {
+    state.motion = stepper.record(s);  // s is `state`, the step just accepted
+    if (on_step) on_step(s);
+  };
   for (const TimeSegment& segment : options.schedule)
     for (int k = 0; k < segment.steps; ++k)
-      advance(stepper, state, segment.dt, 0, options, report, log, on_step);
+      advance(stepper, state, segment.dt, 0, options, report, log, accepted);
   return report;
 }
 

@@ -17,8 +17,11 @@ struct DynamicReport {
   int tangent_updates = 0;
 };
 
-// Integrates from state.time over the schedule. `on_step` sees every accepted state. On failure
-// throws ConvergenceError with the state at the last accepted step.
+// Integrates from state.time over the schedule, at options.load_factor when it is set (else at the
+// state's). The start acceleration is the one the state carries when an earlier integration
+// accepted it under the same load factor and equation of motion (state.motion), and is solved for
+// from equilibrium otherwise. `on_step` sees every accepted state. On failure throws
+// ConvergenceError, naming the likely cause, with the state at the last accepted step.
 DynamicReport integrate(const model::Assembler& assembler, model::State& state,
                         const DynamicOptions& options, const SolveLog& log = {},
                         const std::function<void(const model::State&)>& on_step = {});

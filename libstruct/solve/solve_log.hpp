@@ -15,16 +15,22 @@ struct IterationRecord {
   double residual_norm = 0.0;      // |R| / max(|P|, |F|)
 };
 
-// Receives one record per iteration and a line of text per finished increment.
+// Receives one record per iteration and a line of text per finished increment. `node_name`
+// names a model node (0-based) in failure messages as the user knows it (a case file's id);
+// without it, "node K" with K the 1-based model index.
 struct SolveLog {
   std::function<void(const IterationRecord&)> iteration;
   std::function<void(const std::string&)> message;
+  std::function<std::string(int)> node_name;
 
   void report(const IterationRecord& r) const {
     if (iteration) iteration(r);
   }
   void say(const std::string& s) const {
     if (message) message(s);
+  }
+  std::string nodeName(int node) const {
+    return node_name ? node_name(node) : "node " + std::to_string(node + 1);
   }
 };
 

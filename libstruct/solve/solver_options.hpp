@@ -67,6 +67,7 @@ struct RelaxationOptions {
 
 }  // namespace flexmoor::solve
 
+#include <optional>
 #include <vector>
 
 #include "libstruct/element/element.hpp"
@@ -83,6 +84,9 @@ struct TimeSegment {
 // Newmark time integration (Eq. 4.55-4.63) with Newton iterations in every step.
 struct DynamicOptions {
   std::vector<TimeSegment> schedule;
+  // The load factor held through the step (it scales the loads and prescribed displacements that
+  // have no history); unset: the state's, the factor the previous step left.
+  std::optional<double> load_factor;
   double gamma = 0.5;  // the dissertation's constants (average acceleration)
   double beta = 0.25;
   // HHT-alpha in [-1/3, 0]: numerical damping of the highest modes; when non-zero, gamma and beta

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "libstruct/solve/diagnosis.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
 
@@ -12,18 +13,23 @@ namespace {
 
 // Newton on one implicit pseudo-time step of unit length (Eq. C.8-C.10):
 // [K_T + C I] du = P - F(u) - C (u - u_prev). Returns false if it does not converge.
+// `trace` records the iterations; `stiffness` is set to the mean |K_ii| of the tangent.
 bool relaxationStep(const model::Assembler& assembler, model::State& state,
                     const model::NodalField& previous, double C, const RelaxationOptions& o,
-                    LinearSolver& linear, int& iterations) {
+                    LinearSolver& linear, int& iterations, NewtonTrace& trace, double& stiffness) {
   model::SparseMatrix K;
+  trace.start();
   for (int it = 0; it < o.max_iterations; ++it) {
     Residual R = outOfBalance(assembler, state, &K);
+    trace.residual(R.relative());
+    if (K.rows() > 0) stiffness = K.diagonal().cwiseAbs().mean();
     const Eigen::VectorXd velocity =
         assembler.restrictToFree(asVector(state.displacement) - asVector(previous));
     R.free -= C * velocity;     // D u' with D = C I (Eq. C.11)
     K.diagonal().array() += C;  // Eq. C.10
     if (!linear.factorize(K)) return false;
     const Eigen::VectorXd du = linear.solve(R.free);
+    trace.increment(assembler.model(), du);
     if (!du.allFinite()) return false;
     assembler.addFree(du, state.displacement);
     ++iterations;
@@ -31,6 +37,44 @@ bool relaxationStep(const model::Assembler& assembler, model::State& state,
     if (change < 1e-10 || R.relative() < 0.1 * o.residual_tolerance) return true;
   }
   return false;
+}
+
+// Why a pseudo-time step fails even with a raised damping.
+std::string stepFailure(int step, double C, int retries, const NewtonTrace& trace, double stiffness,
+                        const SolveLog& log) {
+  std::ostringstream s;
+  s << "viscous relaxation step " << step << " did not converge even with damping " << C
+    << " (raised tenfold " << retries << " times): " << trace.diagnosis(log);
+  if (C < 1e-6 * stiffness)
+    s << " (the damping is negligible beside the stiffness, " << stiffness
+      << " on the mean diagonal, and the motion is one no stiffness holds: a mechanism, such as "
+         "a free rigid-body motion or an unloaded slack part)";
+  return s.str();
+}
+
+// Why the schedule ran out of steps: the load never balanced (a mechanism), still moving, or
+// settled but out of balance.
+std::string notSettled(const RelaxationOptions& o, const RelaxationReport& r,
+                       const LargestMove& move, const SolveLog& log) {
+  std::ostringstream s;
+  s << "viscous relaxation did not reach equilibrium in " << o.max_steps << " steps: ";
+  if (r.residual_norm > 0.5)
+    s << "the load stays unbalanced (residual " << r.residual_norm
+      << " of the largest force) while the structure keeps moving (the largest change of the last "
+         "step, "
+      << move.value << ", at " << dofName(log, move.node, move.component)
+      << "): a mechanism, a motion that no support or stiffness resists, driven by the load";
+  else if (r.change_ratio >= o.tolerance)
+    s << "still moving (change " << r.change_ratio << " in the last step, tolerance " << o.tolerance
+      << "; the largest, " << move.value << ", at " << dofName(log, move.node, move.component)
+      << "); more steps, a smaller damping or a static step after it may finish";
+  else
+    s << "the motion has settled (change " << r.change_ratio << ") but the residual, "
+      << r.residual_norm << ", is above " << o.residual_tolerance << ": the damping, "
+      << r.final_damping
+      << ", holds the structure short of equilibrium; more steps, a smaller damping or a static "
+         "step after it may finish";
+  return s.str();
 }
 
 }  // namespace
@@ -46,6 +90,10 @@ RelaxationReport relax(const model::Assembler& assembler, model::State& state,
                        const RelaxationOptions& o, const SolveLog& log) {
   RelaxationReport report;
   LinearSolver linear;
+  NewtonTrace trace;
+  double stiffness = 0.0;
+  LargestMove move;  // the largest change of the last step
+  putAtRest(assembler, state);
   state.load_factor = o.load_factor;
   assembler.applyPrescribed(state);
   double C = o.damping;
@@ -53,18 +101,18 @@ RelaxationReport relax(const model::Assembler& assembler, model::State& state,
   for (int step = 1; step <= o.max_steps; ++step) {
     const model::NodalField previous = state.displacement;
     int retries = 0;
-    while (!relaxationStep(assembler, state, previous, C, o, linear, report.iterations)) {
+    while (!relaxationStep(assembler, state, previous, C, o, linear, report.iterations, trace,
+                           stiffness)) {
       state.displacement = previous;
-      C *= 10.0;
       if (++retries > 8) {
         IterationRecord rec{step, 0, state.load_factor, report.change_ratio, report.residual_norm};
-        throw ConvergenceError("viscous relaxation step " + std::to_string(step) +
-                                   " did not converge even with damping " + std::to_string(C),
-                               rec);
+        throw ConvergenceError(stepFailure(step, C, retries - 1, trace, stiffness, log), rec);
       }
+      C *= 10.0;
     }
     const Eigen::VectorXd change =
         assembler.restrictToFree(asVector(state.displacement) - asVector(previous));
+    move = largestMove(assembler.model(), change);
     const double ratio = displacementNorm(assembler, change, state.displacement);  // Eq. C.15
     const double residual = outOfBalance(assembler, state, nullptr).relative();
     report.steps = step;
@@ -81,9 +129,7 @@ RelaxationReport relax(const model::Assembler& assembler, model::State& state,
   }
   IterationRecord rec{report.steps, 0, state.load_factor, report.change_ratio,
                       report.residual_norm};
-  throw ConvergenceError(
-      "viscous relaxation did not reach equilibrium in " + std::to_string(o.max_steps) + " steps",
-      rec);
+  throw ConvergenceError(notSettled(o, report, move, log), rec);
 }
 
 }  // namespace flexmoor::solve

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 namespace flexmoor::app {
@@ -73,6 +74,40 @@ TEST(Units, ProductsQuotientsExponentsAndParentheses) {
   EXPECT_EQ(parseUnit("N s/m^2").dimension, viscosity.dimension);
   EXPECT_EQ(parseUnit("lbf/ft^2").dimension, kind::kPressure.dimension);
   expectRelative(parseUnit("ksi").si_factor, 1000.0 * kPoundForce / (0.0254 * 0.0254));
+}
+
+// Every prefixed and metric unit: its factor to SI, exactly as defined (SI prefixes; 1 nmi = 1852 m;
+// 1 kgf = 9.80665 N, standard gravity; 1 tf = 1000 kgf; 1 bar = 1e5 Pa; 1 d = 86400 s), and its
+// dimension. Equality, not a tolerance: each factor is one literal.
+TEST(Units, PrefixedUnitsHaveTheirExactFactors) {
+  struct Expected {
+    const char* name;
+    double factor;
+    Dimension dimension;
+  };
+  const Dimension L{0, 1, 0}, M{1, 0, 0}, T{0, 0, 1}, F = kind::kForce.dimension,
+                                                      P = kind::kPressure.dimension, f{0, 0, -1};
+  for (const Expected& e : std::initializer_list<Expected>{
+           {"um", 1e-6, L},     {"µm", 1e-6, L},    {"μm", 1e-6, L},    {"mm", 1e-3, L},
+           {"cm", 1e-2, L},     {"km", 1e3, L},     {"nmi", 1852.0, L}, {"mg", 1e-6, M},
+           {"g", 1e-3, M},      {"kg", 1.0, M},     {"t", 1e3, M},      {"us", 1e-6, T},
+           {"µs", 1e-6, T},     {"μs", 1e-6, T},    {"ms", 1e-3, T},    {"s", 1.0, T},
+           {"min", 60.0, T},    {"h", 3600.0, T},   {"d", 86400.0, T},  {"mN", 1e-3, F},
+           {"N", 1.0, F},       {"kN", 1e3, F},     {"MN", 1e6, F},     {"GN", 1e9, F},
+           {"kgf", 9.80665, F}, {"tf", 9806.65, F}, {"Pa", 1.0, P},     {"hPa", 1e2, P},
+           {"kPa", 1e3, P},     {"MPa", 1e6, P},    {"GPa", 1e9, P},    {"mbar", 1e2, P},
+           {"bar", 1e5, P},     {"Hz", 1.0, f},     {"kHz", 1e3, f}}) {
+    const Unit u = parseUnit(e.name);
+    EXPECT_EQ(u.si_factor, e.factor) << e.name;
+    EXPECT_EQ(u.dimension, e.dimension) << e.name;
+  }
+  // In values: a time step in milliseconds, a modulus in GPa, a line's weight in kN/m.
+  EXPECT_EQ(si("10 ms", kind::kTime), 10.0 * 1e-3);
+  EXPECT_EQ(si("200 GPa", kind::kPressure), 2.0e11);
+  EXPECT_EQ(si("1.5 kN/m", kind::kStiffness), 1500.0);
+  expectRelative(us("250 ms", kind::kTime), 0.25, 1e-16);
+  expectRelative(us("1 tf", kind::kForce), 9806.65 / kPoundForce, 1e-15);
+  EXPECT_THROW(si("1 ms", kind::kLength), UnitError);  // a time, not a metre times a second
 }
 
 TEST(Units, DegreesAreRadians) {
