@@ -68,14 +68,14 @@ runs its steps in order, each from the state the previous one left:
   dynamic  Newmark (Eq. 4.55-4.63) or HHT-alpha time steps with Newton iterations, on a
            schedule of {dt, steps}; a step that fails is halved and retried; progress is logged
 )"
-    // Slot: how loads and load factors pass from step to step (the solvers' rule, issue 9).
+    // How loads and load factors pass from step to step (libstruct/solve, issue 9).
     R"(
-Loads and load factors from step to step:
-  Loads without a history (gravity, nodal loads, pressure, prescribed displacements) are
-  scaled by the load factor. A static step ramps the factor to its `load_factor` (default 1)
-  over its increments; relax runs at its load_factor (default 1); a dynamic step holds the
-  factor the previous step left, or 1 when it is the first step; loads with a history follow
-  history(t) in dynamic steps.
+Loads from step to step: a load with a history is its value times the history at the current
+time. Gravity, nodal loads, pressures and prescribed displacements without one are scaled by
+the load factor, which is 0 at the start of a run: static steps ramp it to their load_factor
+(default 1), relax steps set it (default 1), modes steps keep it, and a dynamic step holds one
+throughout: its load_factor, else the previous step's, or 1 if no earlier step set one. A
+dynamic step after another continues its motion; static and relax steps end at rest.
 )"
     R"(
 Outputs, in DIR (default results/<case>/):

@@ -79,7 +79,7 @@ TEST(Cli, EveryCommandHasItsOwnHelp) {
   const CliRun run = flexmoor("run --help");
   EXPECT_EQ(run.exit_code, 0) << run.output;
   expectAll(run, {"Usage: flexmoor run [OPTIONS] CASE", "-o,--output DIR", "--no-vtk",
-                  "Loads and load factors from step to step", "load_factor", "results/<case>/",
+                  "Loads from step to step", "load_factor", "results/<case>/",
                   "DIR/<case>.nc", "Exit codes", "Examples"});
   EXPECT_EQ(run.output.find("no case file"), std::string::npos) << run.output;
 
