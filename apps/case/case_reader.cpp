@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 
 #include "apps/case/case_builder.hpp"
@@ -100,9 +101,11 @@ Case readCase(const std::string& path) {
       diag.error(0, "the case has no elements (expected lines: or elements:)");
     else if (c.model->equationCount() == 0)
       diag.error(0, "every dof is fixed (expected something to solve for)");
-    checkConnectivity(b);
+    checkModel(b);
   }
   diag.throwIfAny();
+  c.warnings = diag.warnings();
+  for (const std::string& w : c.warnings) std::cerr << "flexmoor: " << w << "\n";
   return c;
 }
 
