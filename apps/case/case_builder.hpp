@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "apps/case/case.hpp"
+#include "apps/case/node_table.hpp"
 #include "apps/case/yaml_input.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/membrane_element.hpp"
@@ -71,9 +72,10 @@ struct CaseBuilder {
   Case& c;
   model::Model& model;
 
-  std::map<int, int> node_of_id;  // file id -> model node
-  std::set<int> broken_node_ids;  // explicit nodes given with errors
-  std::vector<int> node_line;     // model node -> line that defines it
+  std::optional<NodeTable> node_table;  // nodes: when read by the fast path (node_table.hpp)
+  std::map<int, int> node_of_id;        // file id -> model node
+  std::set<int> broken_node_ids;        // explicit nodes given with errors
+  std::vector<int> node_line;           // model node -> line that defines it
   std::map<std::string, std::shared_ptr<const material::CableMaterial>> materials;  // null: broken
   std::map<std::string, std::optional<SectionSpec>> sections;  // nullopt: broken
   std::set<std::string> broken_node_names;  // lines and node sets defined with errors

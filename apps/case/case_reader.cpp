@@ -17,9 +17,9 @@ const std::vector<std::string> kTopKeys = {
     "name",     "title",     "units",    "materials", "sections", "nodes", "lines",  "surfaces",
     "elements", "node_sets", "supports", "histories", "loads",    "steps", "summary"};
 
-YAML::Node loadYaml(Diagnostics& diag) {
+YAML::Node loadYaml(Diagnostics& diag, std::optional<NodeTable>& node_table) {
   try {
-    return YAML::LoadFile(diag.file());
+    return loadCaseFile(diag.file(), node_table);  // node_table.hpp
   } catch (const YAML::BadFile&) {
     diag.error(0, "cannot open the file");
   } catch (const YAML::ParserException& e) {
@@ -62,7 +62,8 @@ std::vector<fs::path> caseFiles() {
 
 Case readCase(const std::string& path) {
   Diagnostics diag(path);
-  const YAML::Node root = loadYaml(diag);
+  std::optional<NodeTable> node_table;
+  const YAML::Node root = loadYaml(diag, node_table);
   Case c;
   c.file = path;
   c.model = std::make_unique<model::Model>();
@@ -74,6 +75,7 @@ Case readCase(const std::string& path) {
                                                                           {"SI", UnitSystem::SI}})
                   .value_or(UnitSystem::SI);
   CaseBuilder b(diag, c.units, c);
+  b.node_table = std::move(node_table);
   c.name = readName(diag, b.in, top, path);
   if (const YAML::Node* t = top.find("title")) c.title = b.in.text(*t, "title").value_or("");
 

@@ -2,6 +2,7 @@
 // then the nodes each line generates, then those of each surface; model elements are the explicit
 // elements in file order, then the cable elements of each line, then each surface's elements.
 #include <algorithm>
+#include <numeric>
 
 #include "apps/case/case_builder.hpp"
 #include "libstruct/element/axisymmetric_membrane.hpp"
@@ -271,6 +272,21 @@ int CaseBuilder::addGeneratedNode(const Eigen::Vector3d& position, int line) {
 }
 
 void readNodes(CaseBuilder& b, const YAML::Node& n) {
+  if (b.node_table) {  // already read and checked; added in ascending id like the others
+    const NodeTable& t = *b.node_table;
+    std::vector<int> order(t.ids.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&t](int i, int j) { return t.ids[i] < t.ids[j]; });
+    model::NodalField X(3, order.size());
+    for (size_t k = 0; k < order.size(); ++k) X.col(k) = t.points[order[k]];
+    const int first = b.model.addNodes(X);
+    for (size_t k = 0; k < order.size(); ++k) {
+      b.node_of_id.emplace_hint(b.node_of_id.end(), t.ids[order[k]], first + k);
+      b.c.node_ids.push_back(t.ids[order[k]]);
+      b.node_line.push_back(t.lines[order[k]]);
+    }
+    return;
+  }
   struct Explicit {
     Eigen::Vector3d position;
     int line;
@@ -289,8 +305,13 @@ void readNodes(CaseBuilder& b, const YAML::Node& n) {
       b.broken_node_ids.insert(*id);
     }
   }
+  model::NodalField X(3, nodes.size());
+  int k = 0;
+  for (const auto& entry : nodes) X.col(k++) = entry.second.position;
+  const int first = b.model.addNodes(X);
+  k = 0;
   for (const auto& [id, node] : nodes) {
-    b.node_of_id[id] = b.model.addNode(node.position);
+    b.node_of_id[id] = first + k++;
     b.c.node_ids.push_back(id);
     b.node_line.push_back(node.line);
   }
