@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <tuple>
+#include <unordered_set>
 
 #include "apps/case/case_builder.hpp"
 
@@ -147,9 +148,10 @@ std::optional<int> nodeRef(CaseBuilder& b, const YAML::Node& n, const std::strin
 std::optional<std::vector<int>> nodeListRef(CaseBuilder& b, const YAML::Node& n,
                                             const std::string& path) {
   std::vector<int> nodes;
-  const auto add = [&nodes](const std::vector<int>& more) {
+  std::unordered_set<int> listed;  // nodes, to drop duplicates in linear time
+  const auto add = [&nodes, &listed](const std::vector<int>& more) {
     for (int node : more)
-      if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
+      if (listed.insert(node).second) nodes.push_back(node);
   };
   if (n.IsSequence()) {
     bool ok = true;
