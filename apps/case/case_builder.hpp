@@ -139,6 +139,9 @@ void checkModel(CaseBuilder& b);
 std::shared_ptr<const model::TimeFunction> historyRef(CaseBuilder& b, const YAML::Node& n,
                                                       const std::string& path);
 
+// Positions closer than this (a millionth of the model's size) are one point (node_refs.cpp).
+double positionTolerance(const CaseBuilder& b);
+
 // Node references (node_refs.cpp). One node: an id, LINE.start, LINE.end or LINE.middle.
 std::optional<int> nodeRef(CaseBuilder& b, const YAML::Node& n, const std::string& path);
 // Several nodes: `all`, a node set, a line (all its nodes), one node reference, or a list of

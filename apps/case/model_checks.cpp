@@ -88,9 +88,7 @@ std::vector<int> unjoinedTwins(const CaseBuilder& b,
   const model::NodalField& X = b.model.reference();
   std::vector<int> twin(X.cols(), -1);
   if (X.cols() == 0) return twin;
-  // Positions closer than this fraction of the model's size are one point (node_refs.cpp).
-  const double size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
-  const double tolerance = 1e-6 * std::max(size, X.cwiseAbs().maxCoeff());
+  const double tolerance = positionTolerance(b);
   if (!(tolerance > 0.0)) return twin;
   const NodeIndex index(X, tolerance);
   const auto joined = [&](int a, int c) {

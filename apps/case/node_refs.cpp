@@ -31,14 +31,6 @@ std::string idRange(const CaseBuilder& b) {
 
 const char* kOneNode = "an id, LINE.start, LINE.end, LINE.middle or {at: [x, y, z]}";
 
-// Positions closer than this fraction of the model's size are the same point.
-double positionTolerance(const CaseBuilder& b) {
-  const model::NodalField& X = b.model.reference();
-  if (X.cols() == 0) return 0.0;
-  const double size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
-  return 1e-6 * std::max(size, X.cwiseAbs().maxCoeff());
-}
-
 // {at: [x, y, z]}: the node at that position.
 std::optional<int> nodeAt(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
   Fields f(b.diag, n, path, {"at"});
@@ -120,6 +112,13 @@ std::optional<int> lineNode(CaseBuilder& b, const YAML::Node& n, const std::stri
 }
 
 }  // namespace
+
+double positionTolerance(const CaseBuilder& b) {
+  const model::NodalField& X = b.model.reference();
+  if (X.cols() == 0) return 0.0;
+  const double size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
+  return 1e-6 * std::max(size, X.cwiseAbs().maxCoeff());
+}
 
 std::optional<int> nodeRef(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
   if (n.IsMap() && n["at"]) return nodeAt(b, n, path);
