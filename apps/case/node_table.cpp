@@ -109,6 +109,13 @@ std::optional<NodeTable> takeNodeTable(std::string& text) {
   return table;
 }
 
+bool tableFits(const YAML::Node& root, const NodeTable& table) {
+  return root.IsMap() && std::any_of(root.begin(), root.end(), [&](const auto& kv) {
+           return kv.first.IsScalar() && kv.first.Scalar() == "nodes" && kv.second.IsNull() &&
+                  kv.first.Mark().line + 1 == table.key_line;
+         });
+}
+
 YAML::Node loadCaseFile(const std::string& file, std::optional<NodeTable>& table) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw YAML::BadFile(file);
@@ -116,11 +123,7 @@ YAML::Node loadCaseFile(const std::string& file, std::optional<NodeTable>& table
   table = takeNodeTable(text);
   if (!table) return YAML::Load(text);
   YAML::Node root = YAML::Load(text);
-  const bool fits = root.IsMap() && std::any_of(root.begin(), root.end(), [&](const auto& kv) {
-                      return kv.first.IsScalar() && kv.first.Scalar() == "nodes" &&
-                             kv.second.IsNull() && kv.first.Mark().line + 1 == table->key_line;
-                    });
-  if (fits) return root;
+  if (tableFits(root, *table)) return root;
   table.reset();
   return YAML::LoadFile(file);
 }

@@ -25,6 +25,10 @@ struct NodeTable {
 // Takes the node table out of `text` (its lines left empty) when the fast path applies.
 std::optional<NodeTable> takeNodeTable(std::string& text);
 
+// Whether yaml-cpp, parsing the text takeNodeTable left, agrees that the table was the value of
+// the top-level key `nodes` (now null) on the table's line; if not, parse the original text.
+bool tableFits(const YAML::Node& root, const NodeTable& table);
+
 // The case file parsed by yaml-cpp, with its node table taken out first when the fast path
 // applies (and yaml-cpp agrees that `nodes:` is the top-level key on that line). Throws what
 // YAML::LoadFile throws.
