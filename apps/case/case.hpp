@@ -77,6 +77,8 @@ struct Case {
   std::vector<int> node_ids;  // the file's id of each model node (explicit or generated)
   std::map<std::string, std::vector<int>> lines;         // nodes of each named line, start to end
   std::map<std::string, std::vector<int>> element_sets;  // named groups (surfaces, lines), 0-based
+  // "FILE:LINE: warning: ..." for what runs but perhaps not as meant (readCase prints them).
+  std::vector<std::string> warnings;
 };
 
 }  // namespace flexmoor::app

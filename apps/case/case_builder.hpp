@@ -8,9 +8,11 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "apps/case/case.hpp"
+#include "apps/case/node_table.hpp"
 #include "apps/case/yaml_input.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/membrane_element.hpp"
@@ -28,18 +30,37 @@ struct SectionSpec {
 // What a section is asked for: cable-like elements (cables, hoop cables) or membranes.
 enum class SectionUse { Cable, Membrane };
 
-// Elements one surface generates (read_surfaces.cpp), each with its element_types entry
-// ("membrane", "axisymmetric_membrane", "cable", "hoop_cable"); added after the lines' cables
-// and registered as the element set of the surface's name.
+// Where an element comes from, for the messages of the checks of the built model
+// (model_checks.cpp): the line of the file that defines it, that item's path ("elements[3]",
+// "lines[1]", "surfaces.roof") and its section's name ("" for none).
+struct ElementOrigin {
+  int line = 0;
+  std::string where;
+  std::string section;
+};
+
+// An element one surface generates, with its element_types entry ("membrane",
+// "axisymmetric_membrane", "cable", "hoop_cable") and its section's name.
+struct PendingElement {
+  std::string type;
+  std::string section;
+  std::unique_ptr<element::Element> element;
+};
+
+// The elements of one surface (read_surfaces.cpp, surface_mesh.cpp); added after the lines'
+// cables and registered as the element set of the surface's name.
 struct PendingSurface {
   std::string name;
-  std::vector<std::pair<std::string, std::unique_ptr<element::Element>>> elements;
+  int line = 0;
+  std::vector<PendingElement> elements;
 };
 
 // A cable element a line generates; added to the model after the explicit elements.
 struct PendingCable {
   std::vector<int> nodes;
   std::string section;
+  int line = 0;
+  std::string where;  // "lines[2]"
 };
 
 struct CaseBuilder {
@@ -51,9 +72,10 @@ struct CaseBuilder {
   Case& c;
   model::Model& model;
 
-  std::map<int, int> node_of_id;  // file id -> model node
-  std::set<int> broken_node_ids;  // explicit nodes given with errors
-  std::vector<int> node_line;     // model node -> line that defines it
+  std::optional<NodeTable> node_table;  // nodes: when read by the fast path (node_table.hpp)
+  std::map<int, int> node_of_id;        // file id -> model node
+  std::set<int> broken_node_ids;        // explicit nodes given with errors
+  std::vector<int> node_line;           // model node -> line that defines it
   std::map<std::string, std::shared_ptr<const material::CableMaterial>> materials;  // null: broken
   std::map<std::string, std::optional<SectionSpec>> sections;  // nullopt: broken
   std::set<std::string> broken_node_names;  // lines and node sets defined with errors
@@ -66,6 +88,10 @@ struct CaseBuilder {
   // Type of each element in file order ("cable", "spring", "point_mass", "membrane",
   // "axisymmetric_membrane", "hoop_cable"; "" when broken).
   std::vector<std::string> element_types;
+  std::vector<ElementOrigin> element_origin;  // of each element, like element_types
+  // The support that fixed each dof first (3 * node + component -> line), to refuse a second
+  // one that prescribes another value.
+  std::unordered_map<long long, int> support_line;
 
   // Adds a node with the next free id (after the largest so far).
   int addGeneratedNode(const Eigen::Vector3d& position, int line);
@@ -73,6 +99,8 @@ struct CaseBuilder {
   // A section by name; reports an unknown one (not a broken one) and one of the other use.
   const SectionSpec* section(const YAML::Node& n, const std::string& path,
                              SectionUse use = SectionUse::Cable);
+  // The name of a section read by section() ("" for nullptr).
+  std::string sectionName(const SectionSpec* spec) const;
 };
 
 // "one of: a, b, c" for the keys of a map, or "a name defined first" when it is empty.
@@ -100,13 +128,19 @@ void readSupports(CaseBuilder& b, const YAML::Node& n);
 void readLoads(CaseBuilder& b, const YAML::Node& n);
 void readSteps(CaseBuilder& b, const YAML::Node& n);
 void readSummary(CaseBuilder& b, const YAML::Node& n);
-// Reports free nodes that no element holds (their stiffness would be singular).
-void checkConnectivity(CaseBuilder& b);
+// The checks of the built model and its steps that no section's reader can make alone
+// (model_checks.cpp): degenerate elements, free nodes and rigid-body mechanisms, coincident
+// nodes, steps that need a mass or more dofs than there are. Errors go to the Diagnostics;
+// warnings (the model runs, but perhaps not as meant) too, as warnings.
+void checkModel(CaseBuilder& b);
 
 // `history: NAME` of a load or a support: the named time function (read_histories.cpp); reports
 // an unknown name, returns nullptr for it and for a broken one.
 std::shared_ptr<const model::TimeFunction> historyRef(CaseBuilder& b, const YAML::Node& n,
                                                       const std::string& path);
+
+// Positions closer than this (a millionth of the model's size) are one point (node_refs.cpp).
+double positionTolerance(const CaseBuilder& b);
 
 // Node references (node_refs.cpp). One node: an id, LINE.start, LINE.end or LINE.middle.
 std::optional<int> nodeRef(CaseBuilder& b, const YAML::Node& n, const std::string& path);

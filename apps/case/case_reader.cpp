@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 
 #include "apps/case/case_builder.hpp"
@@ -50,7 +51,8 @@ std::vector<fs::path> caseFiles() {
 
 Case readCase(const std::string& path) {
   Diagnostics diag(path);
-  const YAML::Node root = loadCaseDocument(diag);
+  std::optional<NodeTable> node_table;
+  const YAML::Node root = loadCaseDocument(diag, node_table);
   Case c;
   c.file = path;
   c.model = std::make_unique<model::Model>();
@@ -62,6 +64,7 @@ Case readCase(const std::string& path) {
                                                                           {"SI", UnitSystem::SI}})
                   .value_or(UnitSystem::SI);
   CaseBuilder b(diag, c.units, c);
+  b.node_table = std::move(node_table);
   c.name = readName(diag, b.in, top, path);
   if (const YAML::Node* t = top.find("title")) c.title = b.in.text(*t, "title").value_or("");
 
@@ -89,9 +92,11 @@ Case readCase(const std::string& path) {
       diag.error(0, "the case has no elements (expected lines: or elements:)");
     else if (c.model->equationCount() == 0)
       diag.error(0, "every dof is fixed (expected something to solve for)");
-    checkConnectivity(b);
+    checkModel(b);
   }
   diag.throwIfAny();
+  c.warnings = diag.warnings();
+  for (const std::string& w : c.warnings) std::cerr << "flexmoor: " << w << "\n";
   return c;
 }
 

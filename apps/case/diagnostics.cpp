@@ -24,6 +24,11 @@ void Diagnostics::error(int line, const std::string& what) {
       {line, line > 0 ? file_ + ":" + std::to_string(line) + ": " + what : file_ + ": " + what});
 }
 
+void Diagnostics::warning(int line, const std::string& what) {
+  warnings_.push_back(file_ + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+                      ": warning: " + what);
+}
+
 void Diagnostics::error(const YAML::Node& at, const std::string& what) { error(lineOf(at), what); }
 
 std::vector<std::string> Diagnostics::messages() const {
@@ -37,6 +42,12 @@ std::vector<std::string> Diagnostics::messages() const {
 
 void Diagnostics::throwIfAny() const {
   if (!problems_.empty()) throw CaseError(messages());
+}
+
+std::string formatNumber(double value) {
+  std::ostringstream text;
+  text << value;  // the stream's default: %g
+  return text.str();
 }
 
 int lineOf(const YAML::Node& node) {

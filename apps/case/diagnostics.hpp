@@ -30,6 +30,11 @@ class Diagnostics {
   // A problem at a YAML node (its line is Mark().line + 1).
   void error(const YAML::Node& at, const std::string& what);
 
+  // Something a run will do, but perhaps not as the user meant: reported, not refused.
+  void warning(int line, const std::string& what);
+  // "FILE:LINE: warning: what", in the order found.
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
   const std::string& file() const { return file_; }
   bool empty() const { return problems_.empty(); }
   // Every message, ordered by line (problems on one line in the order they were found).
@@ -45,7 +50,11 @@ class Diagnostics {
   };
   std::string file_;
   std::vector<Problem> problems_;
+  std::vector<std::string> warnings_;
 };
+
+// A number for a message, as printf's %g writes it (6 significant digits, no trailing zeros).
+std::string formatNumber(double value);
 
 // 1-based line of a node, or 0 when the node carries no position.
 int lineOf(const YAML::Node& node);

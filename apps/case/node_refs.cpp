@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <tuple>
+#include <unordered_set>
 
 #include "apps/case/case_builder.hpp"
 
@@ -29,14 +30,6 @@ std::string idRange(const CaseBuilder& b) {
 }
 
 const char* kOneNode = "an id, LINE.start, LINE.end, LINE.middle or {at: [x, y, z]}";
-
-// Positions closer than this fraction of the model's size are the same point.
-double positionTolerance(const CaseBuilder& b) {
-  const model::NodalField& X = b.model.reference();
-  if (X.cols() == 0) return 0.0;
-  const double size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
-  return 1e-6 * std::max(size, X.cwiseAbs().maxCoeff());
-}
 
 // {at: [x, y, z]}: the node at that position.
 std::optional<int> nodeAt(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
@@ -120,6 +113,13 @@ std::optional<int> lineNode(CaseBuilder& b, const YAML::Node& n, const std::stri
 
 }  // namespace
 
+double positionTolerance(const CaseBuilder& b) {
+  const model::NodalField& X = b.model.reference();
+  if (X.cols() == 0) return 0.0;
+  const double size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
+  return 1e-6 * std::max(size, X.cwiseAbs().maxCoeff());
+}
+
 std::optional<int> nodeRef(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
   if (n.IsMap() && n["at"]) return nodeAt(b, n, path);
   if (!n.IsScalar()) {
@@ -147,9 +147,10 @@ std::optional<int> nodeRef(CaseBuilder& b, const YAML::Node& n, const std::strin
 std::optional<std::vector<int>> nodeListRef(CaseBuilder& b, const YAML::Node& n,
                                             const std::string& path) {
   std::vector<int> nodes;
-  const auto add = [&nodes](const std::vector<int>& more) {
+  std::unordered_set<int> listed;  // nodes, to drop duplicates in linear time
+  const auto add = [&nodes, &listed](const std::vector<int>& more) {
     for (int node : more)
-      if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
+      if (listed.insert(node).second) nodes.push_back(node);
   };
   if (n.IsSequence()) {
     bool ok = true;

@@ -85,9 +85,25 @@ void readSupport(CaseBuilder& b, const YAML::Node& item, const std::string& path
                                          ": a history without a displacement moves nothing "
                                          "(expected displacement: with it)");
   if (!nodes || !values || !history_ok) return;
+  bool reported = false;  // one message for a support however many of its dofs clash
   for (int node : *nodes)
-    for (size_t i = 0; i < fix->size(); ++i)
-      b.model.constrain(node, (*fix)[i], (*values)[i], history);
+    for (size_t i = 0; i < fix->size(); ++i) {
+      const int k = (*fix)[i];
+      const auto [first, added] = b.support_line.emplace(3LL * node + k, lineOf(item));
+      const bool same =
+          b.model.prescribed(node, k) == (*values)[i] && b.model.motion(node, k) == history.get();
+      if (!added && !same && !reported) {
+        b.diag.error(item, path + ": node " + std::to_string(b.c.node_ids[node]) + " " + kAxis[k] +
+                               " is prescribed twice, differently (got " +
+                               formatNumber((*values)[i]) + (history ? " with a history" : "") +
+                               " here and " + formatNumber(b.model.prescribed(node, k)) +
+                               (b.model.motion(node, k) ? " with a history" : "") + " on line " +
+                               std::to_string(first->second) +
+                               ", expected one prescribed displacement a dof)");
+        reported = true;
+      }
+      if (added) b.model.constrain(node, k, (*values)[i], history);
+    }
 }
 
 void readNodalLoad(CaseBuilder& b, const YAML::Node& item, const std::string& path) {

@@ -2,6 +2,7 @@
 // then the nodes each line generates, then those of each surface; model elements are the explicit
 // elements in file order, then the cable elements of each line, then each surface's elements.
 #include <algorithm>
+#include <numeric>
 
 #include "apps/case/case_builder.hpp"
 #include "libstruct/element/axisymmetric_membrane.hpp"
@@ -79,7 +80,8 @@ void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   if (section)
     for (int e = 0; e < elements; ++e) {
       const auto first = nodes.begin() + e * (order - 1);
-      b.line_cables.push_back({std::vector<int>(first, first + order), ns->Scalar()});
+      b.line_cables.push_back(
+          {std::vector<int>(first, first + order), ns->Scalar(), lineOf(item), path});
     }
   if (!name.empty()) b.c.lines[name] = std::move(nodes);
 }
@@ -182,7 +184,14 @@ std::unique_ptr<element::Element> readSpring(CaseBuilder& b, Fields& f) {
   const auto stiffness =
       k ? b.in.quantity(*k, f.path("stiffness"), kind::kStiffness, Limit::Positive) : std::nullopt;
   // A negative rest length tells SpringElement to take the reference distance of its nodes.
-  const double rest = b.in.quantityOr(f, "rest_length", kind::kLength, Limit::NonNegative, -1.0);
+  double rest = b.in.quantityOr(f, "rest_length", kind::kLength, Limit::NonNegative, -1.0);
+  if (rest == 0.0) {  // at rest its two ends meet and its direction, (y2 - y1) / l, is 0 / 0
+    b.diag.error(*f.find("rest_length"), f.path("rest_length") +
+                                             ": a spring of rest length 0 has no direction when "
+                                             "it is at rest (got " +
+                                             f.find("rest_length")->Scalar() + ", expected > 0)");
+    rest = -1.0;
+  }
   material::Compression compression = material::Compression::TensionOnly;
   if (const YAML::Node* c = f.find("compression"))
     compression =
@@ -241,10 +250,17 @@ void readElement(CaseBuilder& b, const YAML::Node& item, const std::string& path
                       {"spring", 4},
                       {"point_mass", 5}});
   b.element_types.push_back(element ? type : "");
+  b.element_origin.push_back({lineOf(item), path, element ? peekText(item, "section") : ""});
   if (element) b.model.addElement(std::move(element));
 }
 
 }  // namespace
+
+std::string CaseBuilder::sectionName(const SectionSpec* spec) const {
+  for (const auto& [name, s] : sections)
+    if (s && &*s == spec) return name;
+  return "";
+}
 
 int CaseBuilder::addGeneratedNode(const Eigen::Vector3d& position, int line) {
   const int id = largestId() + 1;
@@ -256,6 +272,21 @@ int CaseBuilder::addGeneratedNode(const Eigen::Vector3d& position, int line) {
 }
 
 void readNodes(CaseBuilder& b, const YAML::Node& n) {
+  if (b.node_table) {  // already read and checked; added in ascending id like the others
+    const NodeTable& t = *b.node_table;
+    std::vector<int> order(t.ids.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&t](int i, int j) { return t.ids[i] < t.ids[j]; });
+    model::NodalField X(3, order.size());
+    for (size_t k = 0; k < order.size(); ++k) X.col(k) = t.points[order[k]];
+    const int first = b.model.addNodes(X);
+    for (size_t k = 0; k < order.size(); ++k) {
+      b.node_of_id.emplace_hint(b.node_of_id.end(), t.ids[order[k]], first + k);
+      b.c.node_ids.push_back(t.ids[order[k]]);
+      b.node_line.push_back(t.lines[order[k]]);
+    }
+    return;
+  }
   struct Explicit {
     Eigen::Vector3d position;
     int line;
@@ -274,8 +305,13 @@ void readNodes(CaseBuilder& b, const YAML::Node& n) {
       b.broken_node_ids.insert(*id);
     }
   }
+  model::NodalField X(3, nodes.size());
+  int k = 0;
+  for (const auto& entry : nodes) X.col(k++) = entry.second.position;
+  const int first = b.model.addNodes(X);
+  k = 0;
   for (const auto& [id, node] : nodes) {
-    b.node_of_id[id] = b.model.addNode(node.position);
+    b.node_of_id[id] = first + k++;
     b.c.node_ids.push_back(id);
     b.node_line.push_back(node.line);
   }
@@ -293,32 +329,15 @@ void readElements(CaseBuilder& b, const YAML::Node& n) {
     const SectionSpec& s = *b.sections.at(p.section);
     b.model.addElement(element::makeCableElement(std::move(p.nodes), s.section, s.quadrature));
     b.element_types.push_back("cable");
+    b.element_origin.push_back({p.line, p.where, p.section});
   }
   for (PendingSurface& surface : b.surface_elements) {
     std::vector<int>& set = b.c.element_sets[surface.name];
-    for (auto& [type, element] : surface.elements) {
-      set.push_back(b.model.addElement(std::move(element)));
-      b.element_types.push_back(type);
+    for (PendingElement& e : surface.elements) {
+      set.push_back(b.model.addElement(std::move(e.element)));
+      b.element_types.push_back(e.type);
+      b.element_origin.push_back({surface.line, "surface '" + surface.name + "'", e.section});
     }
-  }
-}
-
-void checkConnectivity(CaseBuilder& b) {
-  std::vector<bool> held(b.model.nodeCount(), false);
-  for (const auto& e : b.model.elements())
-    if (e->typeName() != "point_mass")
-      for (int node : e->nodes()) held[node] = true;
-  const char* axis[] = {"x", "y", "z"};
-  for (int node = 0; node < b.model.nodeCount(); ++node) {
-    std::string free;
-    for (int k = 0; k < 3; ++k)
-      if (!b.model.isConstrained(node, k))
-        free += (free.empty() ? "" : ", ") + std::string(axis[k]);
-    if (held[node] || free.empty()) continue;
-    b.diag.error(b.node_line[node], "node " + std::to_string(b.c.node_ids[node]) +
-                                        ": no element holds it and its " + free +
-                                        " are not fixed (expected it connected or fixed: its "
-                                        "stiffness would be singular)");
   }
 }
 

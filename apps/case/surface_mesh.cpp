@@ -2,7 +2,9 @@
 
 #include <Eigen/Geometry>
 #include <unordered_map>
+#include <unordered_set>
 
+#include "apps/case/node_index.hpp"
 #include "libstruct/element/axisymmetric_membrane.hpp"
 #include "libstruct/shape/quad_shape.hpp"
 #include "libstruct/shape/triangle_shape.hpp"
@@ -26,40 +28,6 @@ std::vector<Eigen::Vector2d> naturalNodes(const ElementKind& k) {
   return nodes;
 }
 
-// Finds the node at a position, within a tolerance, over a uniform grid of cells.
-class NodeIndex {
- public:
-  NodeIndex(const model::Model& m, double tolerance) : tolerance_(tolerance) {
-    for (int node = 0; node < m.nodeCount(); ++node) add(m.reference().col(node), node);
-  }
-  int find(const Eigen::Vector3d& x) const {
-    const Key k = key(x);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto cell = cells_.find(hash({k[0] + dx, k[1] + dy, k[2] + dz}));
-          if (cell == cells_.end()) continue;
-          for (const auto& [position, node] : cell->second)
-            if ((position - x).norm() <= tolerance_) return node;
-        }
-    return -1;
-  }
-  void add(const Eigen::Vector3d& x, int node) { cells_[hash(key(x))].push_back({x, node}); }
-
- private:
-  using Key = std::array<long long, 3>;
-  Key key(const Eigen::Vector3d& x) const {
-    return {std::llround(x(0) / (4 * tolerance_)), std::llround(x(1) / (4 * tolerance_)),
-            std::llround(x(2) / (4 * tolerance_))};
-  }
-  static size_t hash(const Key& k) {
-    return std::hash<long long>()(k[0]) ^ (std::hash<long long>()(k[1]) * 0x9E3779B97F4A7C15ULL) ^
-           (std::hash<long long>()(k[2]) * 0xC2B2AE3D27D4EB4FULL);
-  }
-  double tolerance_;
-  std::unordered_map<size_t, std::vector<std::pair<Eigen::Vector3d, int>>> cells_;
-};
-
 // The nodes of one surface, by lattice point: parameters in units of 1/6 of a cell, so that the
 // nodes of every element order (thirds and halves of a cell edge) fall on whole numbers.
 class SurfaceNodeMaker {
@@ -70,7 +38,7 @@ class SurfaceNodeMaker {
         map_(map),
         divisions_(divisions),
         line_(line),
-        index_(b.model, 1e-9 * std::max(map.size(), 1e-300)) {}
+        index_(b.model.reference(), 1e-9 * std::max(map.size(), 1e-300)) {}
 
   // The node at lattice point (u, v), made on first use.
   int node(int u, int v) {
@@ -84,7 +52,7 @@ class SurfaceNodeMaker {
       index_.add(x, n);
     }
     lattice_[key] = n;
-    if (std::find(nodes_.begin(), nodes_.end(), n) == nodes_.end()) nodes_.push_back(n);
+    if (in_surface_.insert(n).second) nodes_.push_back(n);
     return n;
   }
   const std::vector<int>& nodes() const { return nodes_; }
@@ -97,6 +65,7 @@ class SurfaceNodeMaker {
   NodeIndex index_;
   std::unordered_map<long long, int> lattice_;
   std::vector<int> nodes_;
+  std::unordered_set<int> in_surface_;  // nodes_ as a set
 };
 
 // Cell (i, j) split into two triangles: the corners of each, counter-clockwise in (s, t).
@@ -155,7 +124,8 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
                      int line) {
   const int L = SurfaceNodeMaker::kLattice;
   SurfaceNodeMaker maker(b, s.map, s.divisions, line);
-  PendingSurface pending{s.name, {}};
+  PendingSurface pending{s.name, line, {}};
+  const std::string section_name = b.sectionName(s.section);
   const std::vector<Eigen::Vector2d> natural = naturalNodes(s.kind);
   const element::MembraneSection& section = s.section->membrane;
   if (s.map.shape == SurfaceShape::Meridian) {
@@ -163,9 +133,9 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
       std::vector<int> nodes;
       for (int k = 0; k <= s.kind.order; ++k)
         nodes.push_back(maker.node(L * e + L * k / s.kind.order, 0));
-      pending.elements.emplace_back(
-          "axisymmetric_membrane",
-          element::makeAxisymmetricMembrane(nodes, section, s.section->quadrature));
+      pending.elements.push_back(
+          {"axisymmetric_membrane", section_name,
+           element::makeAxisymmetricMembrane(nodes, section, s.section->quadrature)});
     }
     for (int node : maker.nodes()) b.model.constrain(node, 1);  // y carries nothing
   } else {
@@ -200,17 +170,18 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
           }
         }
         for (std::vector<int>& nodes : cells)
-          pending.elements.emplace_back(
-              "membrane",
-              element::makeMembraneElement(s.kind.triangle ? "triangle" : "quad", std::move(nodes),
-                                           section, s.section->quadrature));
+          pending.elements.push_back(
+              {"membrane", section_name,
+               element::makeMembraneElement(s.kind.triangle ? "triangle" : "quad", std::move(nodes),
+                                            section, s.section->quadrature)});
       }
   }
   for (const CableRow& row : rows) {
     if (s.map.shape == SurfaceShape::Meridian) {  // a hoop ring at the node of boundary `at`
       const int node = maker.node(L * row.boundary, 0);
-      pending.elements.emplace_back(
-          "hoop_cable", std::make_unique<element::HoopCable>(node, row.section->section));
+      pending.elements.push_back(
+          {"hoop_cable", b.sectionName(row.section),
+           std::make_unique<element::HoopCable>(node, row.section->section)});
       continue;
     }
     const int cells = s.divisions[row.direction];
@@ -221,8 +192,9 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
         nodes.push_back(row.direction == 0 ? maker.node(along, across) : maker.node(across, along));
       }
       if (nodes.front() == nodes.back()) continue;  // a row through the centre of a disc
-      pending.elements.emplace_back(
-          "cable", element::makeCableElement(nodes, row.section->section, row.section->quadrature));
+      pending.elements.push_back(
+          {"cable", b.sectionName(row.section),
+           element::makeCableElement(nodes, row.section->section, row.section->quadrature)});
     }
   }
   b.surfaces[s.name] = maker.nodes();

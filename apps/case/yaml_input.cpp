@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <unordered_map>
 
 namespace flexmoor::app {
 namespace {
@@ -72,18 +73,19 @@ std::vector<MapEntry> mapEntries(Diagnostics& diag, const YAML::Node& map,
                prefix(path) + "expected a map of 'key: value' (got " + describeNode(map) + ")");
     return entries;
   }
+  std::unordered_map<std::string, size_t> index;  // key -> its entry
   for (const auto& kv : map) {
     if (!kv.first.IsScalar()) {
       diag.error(kv.first,
                  prefix(path) + "a key must be a word (got " + describeNode(kv.first) + ")");
       continue;
     }
-    const std::string key = kv.first.Scalar();
-    const auto same = [&key](const MapEntry& e) { return e.key == key; };
-    const auto first = std::find_if(entries.begin(), entries.end(), same);
-    if (first != entries.end()) {
+    const std::string& key = kv.first.Scalar();
+    // A hash of the keys so far: a map of a million nodes is read in linear time.
+    const auto [first, added] = index.emplace(key, entries.size());
+    if (!added) {
       diag.error(kv.first, childPath(path, key) + ": repeated key (first given on line " +
-                               std::to_string(lineOf(first->key_node)) + ")");
+                               std::to_string(lineOf(entries[first->second].key_node)) + ")");
       continue;
     }
     entries.push_back({key, kv.first, kv.second});

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "apps/case/node_table.hpp"
+
 namespace flexmoor::app {
 namespace {
 
@@ -210,12 +212,25 @@ std::optional<YAML::Node> parse(Diagnostics& diag, const std::string& text) {
 
 size_t aliasBudget(size_t bytes) { return 1000000 + 2 * bytes; }
 
-YAML::Node loadCaseDocument(Diagnostics& diag) {
+YAML::Node loadCaseDocument(Diagnostics& diag, std::optional<NodeTable>& node_table) {
   const std::optional<std::string> text = readText(diag.file());
   if (!text) diag.error(0, "cannot open the file");
   diag.throwIfAny();
-  const std::optional<YAML::Node> root = parse(diag, *text);
-  if (root) DocumentCheck(diag, *text).run(*root);
+  // The node table's fast path (node_table.hpp): parse the text without it when yaml-cpp agrees
+  // that it was the top-level `nodes:`; otherwise the whole text, as if there were none.
+  std::string without_table = *text;
+  node_table = takeNodeTable(without_table);
+  std::optional<YAML::Node> root;
+  if (node_table) {
+    Diagnostics scratch(diag.file());  // a failure here is reported by the full parse below
+    root = parse(scratch, without_table);
+    if (!root || !tableFits(*root, *node_table)) {
+      root.reset();
+      node_table.reset();
+    }
+  }
+  if (!root) root = parse(diag, *text);
+  if (root) DocumentCheck(diag, node_table ? without_table : *text).run(*root);
   diag.throwIfAny();
   return *root;
 }

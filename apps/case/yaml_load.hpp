@@ -10,8 +10,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cstddef>
+#include <optional>
 
 #include "apps/case/diagnostics.hpp"
+#include "apps/case/node_table.hpp"
 
 namespace flexmoor::app {
 
@@ -24,6 +26,8 @@ constexpr int kMaxNesting = 256;
 size_t aliasBudget(size_t bytes);
 
 // The document of diag.file(); throws CaseError (after reporting to diag) when it cannot be read.
-YAML::Node loadCaseDocument(Diagnostics& diag);
+// A plain node table is read by the fast path of node_table.hpp into `node_table` and left out
+// of the document; otherwise `node_table` is empty and `nodes:` is in the document.
+YAML::Node loadCaseDocument(Diagnostics& diag, std::optional<NodeTable>& node_table);
 
 }  // namespace flexmoor::app

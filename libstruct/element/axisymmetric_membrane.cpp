@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "libstruct/element/nodal_mass.hpp"
+#include "libstruct/element/reference_jacobian.hpp"
 #include "libstruct/shape/gauss_legendre.hpp"
 #include "libstruct/shape/lagrange_1d.hpp"
 
@@ -160,6 +161,18 @@ ElementResult AxisymmetricMembrane<N>::result(const ElementContext& c) const {
     r.point_resultant.push_back(n);
   }
   return r;
+}
+
+template <int N>
+double AxisymmetricMembrane<N>::minRelativeJacobian(const model::NodalField& X) const {
+  Coordinates Xe;
+  for (int I = 0; I < N; ++I) Xe.col(I) = X.col(nodes()[I]);
+  const std::vector<double>& xi = shape::gaussLegendre(quadrature_points_).points;
+  double smallest = lineRelativeJacobian<N>(Xe, xi);
+  const double size = boundingDiagonal<N>(Xe);
+  for (double p : xi)
+    smallest = std::min(smallest, Xe.row(0).dot(shape::Lagrange1D<N>::values(p)) / size);
+  return smallest;
 }
 
 template class AxisymmetricMembrane<2>;

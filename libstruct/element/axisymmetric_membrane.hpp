@@ -23,6 +23,8 @@ class AxisymmetricMembrane final : public Element {
   void pressureLoad(const ElementContext& c, double p, Eigen::VectorXd& f,
                     Eigen::MatrixXd* dfdu) const override;
   ElementResult result(const ElementContext& c) const override;
+  // The meridian's, and the radius r / D at each integration point (the hoop metric is r^2).
+  double minRelativeJacobian(const model::NodalField& X) const override;
 
  private:
   using Coordinates = Eigen::Matrix<double, 3, N>;

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "libstruct/element/nodal_mass.hpp"
+#include "libstruct/element/reference_jacobian.hpp"
 #include "libstruct/shape/gauss_legendre.hpp"
 #include "libstruct/shape/lagrange_1d.hpp"
 
@@ -145,6 +146,16 @@ ElementResult CableElement<N>::result(const ElementContext& c) const {
   r.end_tension[0] = axialForce(X, Y, -1.0);
   r.end_tension[1] = axialForce(X, Y, 1.0);
   return r;
+}
+
+template <int N>
+double CableElement<N>::minRelativeJacobian(const model::NodalField& X) const {
+  Coordinates Xe;
+  for (int I = 0; I < N; ++I) Xe.col(I) = X.col(nodes()[I]);
+  std::vector<double> xi = shape::gaussLegendre(quadrature_points_).points;
+  xi.push_back(-1.0);
+  xi.push_back(1.0);
+  return lineRelativeJacobian<N>(Xe, xi);
 }
 
 template class CableElement<2>;

@@ -30,6 +30,8 @@ class CableElement final : public Element {
   void lineLoad(const ElementContext& c, const model::LineLoad& load,
                 Eigen::VectorXd& p) const override;
   ElementResult result(const ElementContext& c) const override;
+  // At the integration points and at the ends, where the end tensions are evaluated.
+  double minRelativeJacobian(const model::NodalField& X) const override;
 
   const CableSection& section() const { return section_; }
 

@@ -57,6 +57,11 @@ class Element {
     if (dfdu) dfdu->setZero(dofCount(), dofCount());
   }
   virtual ElementResult result(const ElementContext& c) const = 0;
+  // The smallest Jacobian of the map from natural coordinates to the reference geometry X over
+  // the element's integration points, relative to a regular element of its size
+  // (reference_jacobian.hpp): <= 0 when the element is folded, inverted or collapsed. Elements
+  // without such a map (springs, point masses, hoops) return 1.
+  virtual double minRelativeJacobian(const model::NodalField&) const { return 1.0; }
 
  private:
   std::vector<int> nodes_;

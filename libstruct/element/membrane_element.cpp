@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "libstruct/element/nodal_mass.hpp"
+#include "libstruct/element/reference_jacobian.hpp"
 #include "libstruct/shape/quad_shape.hpp"
 #include "libstruct/shape/triangle_shape.hpp"
 
@@ -162,6 +163,13 @@ ElementResult MembraneElement<Shape>::result(const ElementContext& c) const {
                                 (y * s.T * y.transpose()));
   }
   return r;
+}
+
+template <class Shape>
+double MembraneElement<Shape>::minRelativeJacobian(const model::NodalField& X) const {
+  Coordinates Xe;
+  for (int I = 0; I < N; ++I) Xe.col(I) = X.col(nodes()[I]);
+  return surfaceRelativeJacobian<Shape, N>(Xe, rule_.points);
 }
 
 template class MembraneElement<shape::QuadShape<4>>;

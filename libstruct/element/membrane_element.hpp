@@ -31,6 +31,7 @@ class MembraneElement final : public Element {
   void pressureLoad(const ElementContext& c, double p, Eigen::VectorXd& f,
                     Eigen::MatrixXd* dfdu) const override;
   ElementResult result(const ElementContext& c) const override;
+  double minRelativeJacobian(const model::NodalField& X) const override;
 
  private:
   static constexpr int N = Shape::Values::RowsAtCompileTime;

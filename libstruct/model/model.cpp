@@ -17,6 +17,18 @@ int Model::addNode(const Eigen::Vector3d& reference_position) {
   return n;
 }
 
+int Model::addNodes(const NodalField& X) {
+  const int n = nodeCount(), count = static_cast<int>(X.cols());
+  reference_.conservativeResize(3, n + count);
+  reference_.rightCols(count) = X;
+  constrained_.conservativeResize(3, n + count);
+  constrained_.rightCols(count).setConstant(false);
+  prescribed_.conservativeResize(3, n + count);
+  prescribed_.rightCols(count).setZero();
+  motion_.resize(3 * (n + count));
+  return n;
+}
+
 int Model::addElement(std::unique_ptr<element::Element> element) {
   for (int n : element->nodes())
     if (n < 0 || n >= nodeCount())

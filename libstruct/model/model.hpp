@@ -30,6 +30,8 @@ struct PressureLoad {
 class Model {
  public:
   int addNode(const Eigen::Vector3d& reference_position);
+  // Appends the columns of X as nodes at once (one allocation); returns the first one's index.
+  int addNodes(const NodalField& X);
   int addElement(std::unique_ptr<element::Element> element);
 
   // Constrains dof `component` (0, 1, 2 = x, y, z) of `node` to the prescribed displacement

@@ -21,6 +21,7 @@ double SineFunction::rate(double t) const {
 double SineFunction::acceleration(double t) const {
   return -amplitude_ * omega_ * omega_ * std::sin(omega_ * t + phase_);
 }
+double SineFunction::period() const { return 2.0 * std::acos(-1.0) / omega_; }
 
 RampFunction::RampFunction(double start, double duration) : start_(start), duration_(duration) {
   if (!(duration > 0.0)) throw std::invalid_argument("a ramp needs a positive duration");

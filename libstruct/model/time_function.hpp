@@ -12,6 +12,8 @@ class TimeFunction {
   virtual double value(double t) const = 0;
   virtual double rate(double t) const = 0;          // d/dt
   virtual double acceleration(double t) const = 0;  // d2/dt2
+  // The period of a periodic function (what a time step must resolve); 0 for one that is not.
+  virtual double period() const { return 0.0; }
 };
 
 // offset + amplitude sin(2 pi t / period + phase)
@@ -21,6 +23,7 @@ class SineFunction final : public TimeFunction {
   double value(double t) const override;
   double rate(double t) const override;
   double acceleration(double t) const override;
+  double period() const override;
 
  private:
   double offset_, amplitude_, omega_, phase_;

@@ -114,8 +114,9 @@ elements:
 node_sets:
   anchors: [1, 3]
 supports:
-  - {nodes: anchors, fix: [x, y, z]}
+  - {nodes: anchors, fix: [y, z]}
   - {nodes: all, fix: [y]}
+  - {node: 1, fix: [x]}
   - {node: 3, fix: [x], displacement: [0.5 m]}
 loads:
   gravity: {g: 9.81 m/s^2}

@@ -1,0 +1,320 @@
+// The checks of a case's built model and steps (checkModel, case_builder.hpp): what would make a
+// run fail obscurely or give a wrong number, refused with the line of the element, node or step.
+//   geometry   every element's Jacobian positive at its integration points
+//              (Element::minRelativeJacobian)
+//   mechanisms a free dof that no element holds; a group of nodes joined by elements that no
+//              support holds in x, y or z (a rigid translation). Only these topological
+//              mechanisms: a taut net supported at its ends has a singular initial stiffness
+//              too (its cables start slack), which viscous relaxation is there for.
+//   coincident two nodes at one point that no element joins: part of the error when they leave
+//              a mechanism, else a warning (the model runs, but perhaps not as meant).
+//   steps      modes and dynamic steps need a mass on every free dof; no more modes than free
+//              dofs; a warning for a time step too long for a periodic history it is driven by.
+#include <algorithm>
+#include <numeric>
+#include <set>
+
+#include "apps/case/case_builder.hpp"
+#include "apps/case/node_index.hpp"
+
+namespace flexmoor::app {
+namespace {
+
+const char* const kAxis[] = {"x", "y", "z"};
+
+// Below this Jacobian relative to a regular element's (reference_jacobian.hpp) an element has
+// collapsed: its stiffness would be 1e8 times that of a well-shaped one, or infinite.
+constexpr double kCollapsed = 1e-8;
+
+// Fewer time steps than this in a period of a history do not resolve it (the trapezoidal
+// rule's period error is about (pi^2 / 12) (dt / T)^2: 8% at 10 steps a period).
+constexpr double kStepsPerPeriod = 10.0;
+
+// Messages and warnings beyond this many of one kind are summed up in one line.
+constexpr int kMaxReported = 20;
+
+std::string nodeName(const CaseBuilder& b, int node) {
+  return "node " + std::to_string(b.c.node_ids[node]);
+}
+
+std::string elementName(const CaseBuilder& b, int e) {
+  return "element " + std::to_string(e + 1) + " (" + b.model.element(e).typeName() + " of " +
+         b.element_origin[e].where + ")";
+}
+
+bool isLine(const element::Element& e) {
+  return e.typeName().rfind("cable", 0) == 0 || e.typeName().rfind("axisymmetric", 0) == 0;
+}
+
+void checkGeometry(CaseBuilder& b) {
+  for (int e = 0; e < b.model.elementCount(); ++e) {
+    const element::Element& element = b.model.element(e);
+    const double J = element.minRelativeJacobian(b.model.reference());
+    if (J > kCollapsed) continue;
+    const bool axisymmetric = element.typeName().rfind("axisymmetric", 0) == 0;
+    const std::string hint =
+        isLine(element) ? std::string("are its middle nodes strictly between its ends, in order") +
+                              (axisymmetric ? ", and its points at x > 0 (the radius)?" : "?")
+                        : "are its nodes in order around it, and not on one line?";
+    b.diag.error(b.element_origin[e].line,
+                 elementName(b, e) + ": " +
+                     (isLine(element) ? "folded or collapsed" : "inverted or collapsed") +
+                     ": its Jacobian is not positive at every integration point (got " +
+                     formatNumber(J) + " relative to a regular element's, expected > 0; " + hint +
+                     ")");
+  }
+}
+
+// Nodes joined through elements (springs and cables alike; a point mass joins nothing).
+class Components {
+ public:
+  explicit Components(int nodes) : parent_(nodes) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int root(int n) {
+    while (parent_[n] != n) n = parent_[n] = parent_[parent_[n]];
+    return n;
+  }
+  void join(int a, int b) {
+    a = root(a), b = root(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // the root is the smallest node
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+// For each node, another node at the same point that no element joins to it (or -1).
+std::vector<int> unjoinedTwins(const CaseBuilder& b,
+                               const std::vector<std::vector<int>>& adjacent) {
+  const model::NodalField& X = b.model.reference();
+  std::vector<int> twin(X.cols(), -1);
+  if (X.cols() == 0) return twin;
+  const double tolerance = positionTolerance(b);
+  if (!(tolerance > 0.0)) return twin;
+  const NodeIndex index(X, tolerance);
+  const auto joined = [&](int a, int c) {
+    for (int e : adjacent[a])
+      for (int n : b.model.element(e).nodes())
+        if (n == c) return true;
+    return false;
+  };
+  for (int node = 0; node < X.cols(); ++node)
+    index.visitNear(X.col(node), [&](int other) {
+      if (other == node || joined(node, other)) return true;
+      twin[node] = other;
+      return false;
+    });
+  return twin;
+}
+
+std::string twinHint(const CaseBuilder& b, int node, int twin) {
+  return "; " + nodeName(b, node) + " is at the same point as " + nodeName(b, twin) + " (line " +
+         std::to_string(b.node_line[twin]) +
+         "), which no element joins to it: did you mean them merged into one node?";
+}
+
+// The named lines and surfaces a group of nodes (by its root) holds, for the messages.
+std::string namesOf(CaseBuilder& b, Components& parts, int root) {
+  std::string names;
+  const auto add = [&](const char* what, const std::map<std::string, std::vector<int>>& sets) {
+    for (const auto& [name, nodes] : sets)
+      if (!nodes.empty() && parts.root(nodes.front()) == root)
+        names += (names.empty() ? "" : ", ") + std::string(what) + " '" + name + "'";
+  };
+  add("line", b.c.lines);
+  add("surface", b.surfaces);
+  return names;
+}
+
+void checkMechanisms(CaseBuilder& b) {
+  const int count = b.model.nodeCount();
+  std::vector<std::vector<int>> adjacent(count);  // elements at each node
+  Components parts(count);
+  std::vector<bool> held(count, false);
+  for (int e = 0; e < b.model.elementCount(); ++e) {
+    const element::Element& element = b.model.element(e);
+    if (element.typeName() == "point_mass") continue;
+    for (int n : element.nodes()) {
+      adjacent[n].push_back(e);
+      held[n] = true;
+      parts.join(element.nodes().front(), n);
+    }
+  }
+  const std::vector<int> twin = unjoinedTwins(b, adjacent);
+
+  // Free dofs of nodes that no element holds.
+  for (int node = 0; node < count; ++node) {
+    std::string free;
+    for (int k = 0; k < 3; ++k)
+      if (!b.model.isConstrained(node, k))
+        free += (free.empty() ? "" : ", ") + std::string(kAxis[k]);
+    if (held[node] || free.empty()) continue;
+    b.diag.error(b.node_line[node], nodeName(b, node) + ": no element holds it and its " + free +
+                                        " are not fixed (expected it connected or fixed: its "
+                                        "stiffness would be singular" +
+                                        (twin[node] >= 0 ? twinHint(b, node, twin[node]) : "") +
+                                        ")");
+  }
+
+  // Directions each group is held in: by a support on any of its nodes, or, radially (x), by
+  // the hoop stiffness of an axisymmetric membrane or a hoop cable.
+  std::vector<int> fixed(count, 0), size(count, 0);
+  for (int node = 0; node < count; ++node) {
+    if (!held[node]) continue;
+    const int r = parts.root(node);
+    ++size[r];
+    for (int k = 0; k < 3; ++k)
+      if (b.model.isConstrained(node, k)) fixed[r] |= 1 << k;
+  }
+  for (const auto& element : b.model.elements())
+    if (element->typeName().rfind("axisymmetric", 0) == 0 || element->typeName() == "hoop_cable")
+      fixed[parts.root(element->nodes().front())] |= 1;
+  // A node of a group at the point of a node outside it hints at the cause.
+  std::vector<int> astray(count, -1);
+  for (int node = 0; node < count; ++node) {
+    const int t = twin[node];
+    if (held[node] && t >= 0 && (!held[t] || parts.root(t) != parts.root(node)) &&
+        astray[parts.root(node)] < 0)
+      astray[parts.root(node)] = node;
+  }
+  for (int r = 0; r < count; ++r) {
+    if (!held[r] || parts.root(r) != r || fixed[r] == 7) continue;
+    std::string free;
+    for (int k = 0; k < 3; ++k)
+      if (!(fixed[r] & (1 << k))) free += (free.empty() ? "" : " and ") + std::string(kAxis[k]);
+    const std::string hint = astray[r] >= 0 ? twinHint(b, astray[r], twin[astray[r]]) : "";
+    const std::string names = namesOf(b, parts, r);
+    const std::string others =
+        size[r] == 2 ? "the node" : "the " + std::to_string(size[r] - 1) + " nodes";
+    b.diag.error(b.node_line[r],
+                 nodeName(b, r) + " and " + others + " joined to it by elements" +
+                     (names.empty() ? "" : " (" + names + ")") + " are free to move in " + free +
+                     " as a rigid body: no support fixes " + free + " on any of them (got " +
+                     std::to_string(size[r]) + " nodes free in " + free +
+                     ", expected a support fixing " + free + " on one of them" + hint + ")");
+  }
+
+  // Coincident nodes that leave no mechanism: the model runs, but they were perhaps meant as one.
+  int reported = 0, more = 0;
+  for (int node = 0; node < count; ++node) {
+    if (twin[node] < node) continue;  // each pair once, from its first node
+    if (reported == kMaxReported) {
+      ++more;
+      continue;
+    }
+    ++reported;
+    b.diag.warning(b.node_line[node],
+                   nodeName(b, node) + " and " + nodeName(b, twin[node]) + " (line " +
+                       std::to_string(b.node_line[twin[node]]) +
+                       ") are at one point and no element joins them: did you mean them merged "
+                       "into one node?");
+  }
+  if (more > 0)
+    b.diag.warning(0, "and " + std::to_string(more) + " more pairs of nodes at one point");
+}
+
+// Mass of each dof of the model (the diagonal of its consistent mass matrix, Eq. 4.40, 4.49).
+std::vector<double> dofMass(const CaseBuilder& b, std::set<std::string>& massless_sections) {
+  std::vector<double> mass(3 * b.model.nodeCount(), 0.0);
+  const model::State state = b.model.initialState();
+  Eigen::MatrixXd M;
+  for (int e = 0; e < b.model.elementCount(); ++e) {
+    const element::Element& element = b.model.element(e);
+    element.mass({b.model.reference(), state, e}, element::MassKind::Consistent, M);
+    const std::vector<int>& nodes = element.nodes();
+    for (size_t I = 0; I < nodes.size(); ++I)
+      for (int k = 0; k < 3; ++k) mass[3 * nodes[I] + k] += M(3 * I + k, 3 * I + k);
+    if (!(M.diagonal().sum() > 0.0) && !b.element_origin[e].section.empty())
+      massless_sections.insert(b.element_origin[e].section);
+  }
+  return mass;
+}
+
+std::string stepName(const StepSpec& step) { return "step '" + step.name + "'"; }
+
+void checkMass(CaseBuilder& b, const StepSpec& step, const std::vector<double>& mass,
+               const std::set<std::string>& massless_sections) {
+  int missing = 0, first = -1;
+  for (int node = 0; node < b.model.nodeCount(); ++node)
+    for (int k = 0; k < 3; ++k)
+      if (!b.model.isConstrained(node, k) && !(mass[3 * node + k] > 0.0)) {
+        ++missing;
+        if (first < 0) first = node;
+      }
+  if (missing == 0) return;
+  std::string sections;
+  for (const std::string& s : massless_sections) sections += (sections.empty() ? "" : ", ") + s;
+  b.diag.error(step.where.line,
+               stepName(step) + ": needs a mass on every free dof, and " + std::to_string(missing) +
+                   " have none, the first at " + nodeName(b, first) + " (line " +
+                   std::to_string(b.node_line[first]) + ") (got " +
+                   (sections.empty() ? std::string("only massless elements there")
+                                     : "no density: on section " + sections) +
+                   ", expected a density: on the sections, or a point_mass on those nodes)");
+}
+
+// The name of a history, for the warnings.
+std::string historyName(const CaseBuilder& b, const model::TimeFunction* f) {
+  for (const auto& [name, h] : b.histories)
+    if (h.get() == f) return name;
+  return "";
+}
+
+// The periodic histories that drive the model: of loads, pressures and prescribed motions.
+std::set<const model::TimeFunction*> periodicHistories(const model::Model& m) {
+  std::set<const model::TimeFunction*> used;
+  for (const model::NodalLoad& load : m.nodalLoads()) used.insert(load.history.get());
+  for (const model::PressureLoad& p : m.pressures()) used.insert(p.history.get());
+  for (int node = 0; node < m.nodeCount(); ++node)
+    for (int k = 0; k < 3; ++k) used.insert(m.motion(node, k));
+  std::set<const model::TimeFunction*> periodic;
+  for (const model::TimeFunction* f : used)
+    if (f && f->period() > 0.0) periodic.insert(f);
+  return periodic;
+}
+
+void checkTimeStep(CaseBuilder& b, const StepSpec& step,
+                   const std::set<const model::TimeFunction*>& periodic) {
+  double dt = 0.0;
+  for (const solve::TimeSegment& s : step.dynamic.schedule) dt = std::max(dt, s.dt);
+  const std::string time = unitNames(b.c.units).time;
+  for (const model::TimeFunction* f : periodic) {
+    const double ratio = dt / f->period();
+    if (ratio * kStepsPerPeriod <= 1.0) continue;
+    b.diag.warning(
+        step.where.line,
+        stepName(step) + ": dt = " + formatNumber(dt) + " " + time + " is " + formatNumber(ratio) +
+            " times the period " + formatNumber(f->period()) + " " + time + " of history '" +
+            historyName(b, f) + "' (dt / period = " + formatNumber(ratio) + "; fewer than " +
+            formatNumber(kStepsPerPeriod) + " steps a period do not resolve it, expected dt <= " +
+            formatNumber(f->period() / kStepsPerPeriod) + " " + time + ")");
+  }
+}
+
+void checkSteps(CaseBuilder& b) {
+  const bool needs_mass = std::any_of(b.c.steps.begin(), b.c.steps.end(), [](const StepSpec& s) {
+    return s.kind == StepSpec::Kind::Modes || s.kind == StepSpec::Kind::Dynamic;
+  });
+  std::set<std::string> massless_sections;
+  const std::vector<double> mass =
+      needs_mass ? dofMass(b, massless_sections) : std::vector<double>();
+  const auto periodic = periodicHistories(b.model);
+  for (const StepSpec& step : b.c.steps) {
+    if (step.kind == StepSpec::Kind::Modes || step.kind == StepSpec::Kind::Dynamic)
+      checkMass(b, step, mass, massless_sections);
+    if (step.kind == StepSpec::Kind::Modes && step.modes.modes > b.model.equationCount())
+      b.diag.error(step.where.line, stepName(step) + ": more modes than free dofs (got count: " +
+                                        std::to_string(step.modes.modes) + ", expected at most " +
+                                        std::to_string(b.model.equationCount()) + ")");
+    if (step.kind == StepSpec::Kind::Dynamic) checkTimeStep(b, step, periodic);
+  }
+}
+
+}  // namespace
+
+void checkModel(CaseBuilder& b) {
+  checkGeometry(b);
+  checkMechanisms(b);
+  checkSteps(b);
+}
+
+}  // namespace flexmoor::app
