@@ -44,12 +44,6 @@ void Diagnostics::throwIfAny() const {
   if (!problems_.empty()) throw CaseError(messages());
 }
 
-std::string formatNumber(double value) {
-  std::ostringstream text;
-  text << value;  // the stream's default: %g
-  return text.str();
-}
-
 int lineOf(const YAML::Node& node) {
   if (!node.IsDefined()) return 0;
   const YAML::Mark mark = node.Mark();

@@ -53,9 +53,6 @@ class Diagnostics {
   std::vector<std::string> warnings_;
 };
 
-// A number for a message, as printf's %g writes it (6 significant digits, no trailing zeros).
-std::string formatNumber(double value);
-
 // 1-based line of a node, or 0 when the node carries no position.
 int lineOf(const YAML::Node& node);
 

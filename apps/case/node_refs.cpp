@@ -49,7 +49,7 @@ std::optional<int> nodeAt(CaseBuilder& b, const YAML::Node& n, const std::string
                    "the position of a node" +
                    (nearest < 0 ? std::string()
                                 : "; the nearest, node " + std::to_string(b.c.node_ids[nearest]) +
-                                      ", is " + std::to_string(distance) + " away") +
+                                      ", is " + formatNumber(distance) + " away") +
                    ")");
   return std::nullopt;
 }

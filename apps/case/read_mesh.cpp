@@ -172,7 +172,7 @@ std::unique_ptr<element::Element> readHoopCable(CaseBuilder& b, Fields& f) {
   if (!node || !section) return nullptr;
   if (!(b.model.reference()(0, *node) > 0.0)) {
     b.diag.error(*n, f.path("node") + ": a hoop needs a radius (got a node at x = " +
-                         std::to_string(b.model.reference()(0, *node)) + ", expected x > 0)");
+                         formatNumber(b.model.reference()(0, *node)) + ", expected x > 0)");
     return nullptr;
   }
   return std::make_unique<element::HoopCable>(*node, section->section);
