@@ -196,19 +196,22 @@ void Assembler::applyPrescribed(State& state) const {
 // axial force from the strain at xi = +-1 converges more slowly and can be far off when EA / T is
 // large (a curved quadratic element cannot keep its stretch uniform); the integration points keep
 // their strain-based tension.
-void Assembler::setEndTensions(const State& state, int e, element::ElementResult& r) const {
+void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scratch,
+                               element::ElementResult& r) const {
   const element::Element& element = model_.element(e);
-  Eigen::VectorXd f, p;
+  Eigen::VectorXd& f = scratch.force;
+  Eigen::VectorXd& p = scratch.load;
   element.internalForce(context(state, e), f, nullptr);
   elementLoad(state, e, p);
   f -= p;
   const auto& index = full_index_[e];
-  Eigen::VectorXd a(index.size());
+  Eigen::VectorXd& a = scratch.acceleration;
+  a.resize(index.size());
   for (size_t k = 0; k < index.size(); ++k) a(k) = state.acceleration.data()[index[k]];
   if (!a.isZero(0.0)) {
-    Eigen::MatrixXd m;
-    element.mass(context(state, e), element::MassKind::Consistent, m);
-    f += m * a;
+    if (consistent_masses_.empty())
+      consistent_masses_ = elementMasses(element::MassKind::Consistent);
+    f += consistent_masses_[e] * a;
   }
   const std::vector<int>& nodes = element.nodes();
   const int last = static_cast<int>(nodes.size()) - 1;
@@ -227,12 +230,13 @@ void Assembler::setEndTensions(const State& state, int e, element::ElementResult
 std::vector<element::ElementResult> Assembler::elementResults(const State& state) const {
   std::vector<element::ElementResult> results;
   results.reserve(model_.elementCount());
+  EndForceScratch scratch;  // sized by the first element, reused by the next ones
   for (int e = 0; e < model_.elementCount(); ++e) {
     results.push_back(model_.element(e).result(context(state, e)));
     element::ElementResult& r = results.back();
     const bool line = model_.element(e).nodes().size() >= 2 && !r.point_tension.empty() &&
                       r.point_resultant.empty();
-    if (line) setEndTensions(state, e, r);
+    if (line) setEndTensions(state, e, scratch, r);
   }
   return results;
 }

@@ -57,12 +57,19 @@ class Assembler {
   double pressureFactor(const PressureLoad& load, const State& state) const;
   // Element e's own share of the proportional loads (gravity, line loads) at the load factor.
   void elementLoad(const State& state, int e, Eigen::VectorXd& load) const;
-  void setEndTensions(const State& state, int e, element::ElementResult& r) const;
+  struct EndForceScratch {
+    Eigen::VectorXd force, load, acceleration;
+  };
+  void setEndTensions(const State& state, int e, EndForceScratch& scratch,
+                      element::ElementResult& r) const;
 
   const Model& model_;
   SparseMatrix pattern_;
   std::vector<std::vector<int>> full_index_;  // per element: full index of each local dof
   std::vector<std::vector<int>> slot_;        // per element: value slot of each (a, b), or -1
+  // Consistent element masses for the end-force balance, computed on first use (total
+  // Lagrangian: they depend on the reference configuration only).
+  mutable std::vector<Eigen::MatrixXd> consistent_masses_;
 };
 
 }  // namespace flexmoor::model
