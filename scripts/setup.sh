@@ -7,9 +7,14 @@ cd "$(dirname "$0")/.."
 # libopenblas0-serial: an optimised single-threaded BLAS/LAPACK behind the system alternatives,
 # used by CHOLMOD's supernodal factorisation (twice as fast as the reference BLAS on a 100,000-dof
 # membrane; docs/performance.md).
+# clang, libfuzzer-14-dev: the libFuzzer target of the case reader (scripts/fuzz.sh).
+# python3-xarray, python3-netcdf4: the test that opens a result as the Python ecosystem does;
+# python3-matplotlib: `flexmoor plot`. (Debian's modules, for the system interpreter.)
+# libcli11-dev: the command line.
 packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgsl-dev
           libfftw3-dev libnetcdf-dev netcdf-bin libyaml-cpp-dev libgtest-dev libbenchmark-dev
-          libspectra-dev libpng-dev libopenblas0-serial ccache libcli11-dev)
+          libspectra-dev libpng-dev libopenblas0-serial ccache libcli11-dev clang libfuzzer-14-dev
+          python3-xarray python3-netcdf4 python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

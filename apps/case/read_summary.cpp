@@ -76,7 +76,8 @@ std::optional<int> stepRef(CaseBuilder& b, const YAML::Node& n, const std::strin
   const std::string s = n.IsScalar() ? n.Scalar() : "";
   const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), index);
   if (error == std::errc() && end == s.data() + s.size()) {
-    const auto checked = b.in.integer(n, path, 1, std::max(count, 1));
+    if (count == 0) return std::nullopt;  // no steps: reported by readSteps
+    const auto checked = b.in.integer(n, path, 1, count);
     return checked ? std::optional(*checked - 1) : std::nullopt;
   }
   std::vector<int> matches;
@@ -119,7 +120,8 @@ std::optional<int> elementRef(CaseBuilder& b, const YAML::Node& n, const std::st
     index = set->second[local - 1];
   } else {
     const int count = static_cast<int>(b.element_types.size());
-    const auto id = b.in.integer(n, path, 1, std::max(count, 1));
+    if (count == 0) return std::nullopt;  // no elements: reported by readCase
+    const auto id = b.in.integer(n, path, 1, count);
     if (!id) return std::nullopt;
     index = *id - 1;
   }
