@@ -155,7 +155,12 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
   position_ =
       defineVector3("position", step_node, "coordinate in the current configuration", u.length);
   velocity_ = defineVector3("velocity", step_node, "velocity", u.length + "/" + u.time);
-  reaction_ = defineVector3("reaction", step_node, "support reaction (zero at free dofs)", u.force);
+  // An axisymmetric meridian's forces are per radian of circumference (its hoops' tensions are
+  // whole forces).
+  const bool meridian = std::any_of(model.elements().begin(), model.elements().end(),
+                                    [](const auto& e) { return e->axisymmetric(); });
+  reaction_ = defineVector3("reaction", step_node, "support reaction (zero at free dofs)",
+                            meridian ? u.force + "/rad" : u.force);
   for (const Vector3Variable* v : {&displacement_, &position_, &velocity_, &reaction_})
     for (const int id : v->id) file_.putAttribute(id, "coordinates", kNodeCoordinates);
   tension_end_ =

@@ -15,6 +15,7 @@ class AxisymmetricMembrane final : public Element {
   AxisymmetricMembrane(std::vector<int> nodes, MembraneSection section, int quadrature_points = 0);
 
   std::string typeName() const override { return "axisymmetric_membrane" + std::to_string(N); }
+  bool axisymmetric() const override { return true; }
   void internalForce(const ElementContext& c, Eigen::VectorXd& f,
                      Eigen::MatrixXd* K) const override;
   void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
@@ -41,6 +42,7 @@ class HoopCable final : public Element {
   HoopCable(int node, CableSection section);
 
   std::string typeName() const override { return "hoop_cable"; }
+  bool axisymmetric() const override { return true; }
   void internalForce(const ElementContext& c, Eigen::VectorXd& f,
                      Eigen::MatrixXd* K) const override;
   void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;

@@ -36,6 +36,8 @@ class Element {
   const std::vector<int>& nodes() const { return nodes_; }
   int dofCount() const { return 3 * static_cast<int>(nodes_.size()); }
   virtual std::string typeName() const = 0;
+  // True for elements of an axisymmetric meridian, whose forces are per radian of circumference.
+  virtual bool axisymmetric() const { return false; }
 
   // Internal force f; when K is given, also the tangent stiffness dF/du.
   virtual void internalForce(const ElementContext& c, Eigen::VectorXd& f,

@@ -1,8 +1,9 @@
 """Opens a flexmoor result with xarray as a user would and checks that CF metadata is honoured.
 
-Usage: /usr/bin/python3 xarray_check.py FILE.nc [--mixed]
+Usage: /usr/bin/python3 xarray_check.py FILE.nc [--mixed] [--per-radian]
 Prints one line per check and exits 1 on the first that fails. --mixed: the file holds cables
-and membranes, so tension_end must be finite on the cables and missing (NaN) on the membranes.
+and membranes, so tension_end must be finite on the cables and missing (NaN) on the membranes;
+--per-radian: an axisymmetric meridian, whose reactions are per radian of circumference.
 """
 import sys
 
@@ -67,4 +68,7 @@ if "--mixed" in sys.argv:
     resultant = ds.membrane_resultant_max.isel(time=-1).values
     require(np.isnan(resultant[cables]).all() and np.isfinite(resultant[membranes]).all(),
             "membrane resultants are missing on cables and present on membranes")
+if "--per-radian" in sys.argv:
+    require(ds.reaction_x.attrs.get("units", "").endswith("/rad"),
+            "an axisymmetric meridian's reactions are per radian (%s)" % ds.reaction_x.attrs.get("units"))
 print("xarray reads %s as intended" % path)

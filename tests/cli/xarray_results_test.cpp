@@ -38,4 +38,9 @@ TEST(XarrayReadsResults, MixedModelMasksWhatDoesNotApply) {
   expectXarrayReads("ex5-cable-reinforced-tube", "--mixed");
 }
 
+// An axisymmetric meridian: its reactions are per radian of circumference, and say so.
+TEST(XarrayReadsResults, AxisymmetricReactionsArePerRadian) {
+  expectXarrayReads("ex3-tube-inflation-axisymmetric", "--per-radian");
+}
+
 }  // namespace
