@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Fresh machine to a full test run: set up, build, run every test with ctest; then the same suite
 # again built with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/: gcc as for the
-# Release tree, -O1 with line tables (-g1: stacks name file and line, and it builds faster), assertions on), where any memory error, leak, undefined behaviour or
-# failed assertion fails the test that meets it.
+# Release tree, -O1 with line tables only (-g1: stacks still name file and line, and it builds
+# faster), assertions on), where any memory error, leak, undefined behaviour or failed assertion
+# fails the test that meets it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # ccache hits from any checkout: paths relative to the checkout, and the build directory left out
