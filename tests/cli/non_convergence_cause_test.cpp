@@ -4,8 +4,8 @@
 // refuses such a case file.) Numbers in %g style: no "%f" padding such as
 // "6.000000" or "0.000000".
 #include <gtest/gtest.h>
+#include <unistd.h>
 
-#include <fstream>
 #include <string>
 
 #include "tests/support/cli_run.hpp"
@@ -39,10 +39,7 @@ summary:
 }
 
 CliRun runText(const std::string& name, const std::string& text) {
-  const auto dir = scratch(name);
-  const auto file = dir / (name + ".yaml");
-  std::ofstream(file) << text;
-  return flexmoor("run " + file.string() + " -o " + (dir / "out").string());
+  return test::runText(scratch(name + "-" + std::to_string(getpid())), name, text);
 }
 
 void expectDiagnosis(const CliRun& r, const std::vector<std::string>& fragments) {

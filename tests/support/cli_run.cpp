@@ -79,11 +79,15 @@ std::string runNamedCase(const std::string& case_name) {
   return readFile(dir / (case_name + ".summary.json"));
 }
 
-std::string runCaseText(const std::string& name, const std::string& text) {
-  const fs::path dir = scratch(name + "-" + std::to_string(getpid()));
+CliRun runText(const fs::path& dir, const std::string& name, const std::string& text) {
   const fs::path file = dir / (name + ".yaml");
   std::ofstream(file) << text;
-  const CliRun r = flexmoor("run " + file.string() + " -o " + dir.string());
+  return flexmoor("run " + file.string() + " -o " + dir.string());
+}
+
+std::string runCaseText(const std::string& name, const std::string& text) {
+  const fs::path dir = scratch(name + "-" + std::to_string(getpid()));
+  const CliRun r = runText(dir, name, text);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return readSummary(dir);
 }

@@ -34,6 +34,9 @@ std::string runNamedCase(const std::string& case_name);
 // expects exit code 0 and returns the text of its <case>.summary.json.
 std::string runCaseText(const std::string& name, const std::string& text);
 
+// Writes `text` as DIR/NAME.yaml and runs it with `-o DIR`, whatever its exit code.
+CliRun runText(const std::filesystem::path& dir, const std::string& name, const std::string& text);
+
 // A case name as a GoogleTest name: "ex1-suspended-cable-8xL2" -> "ex1_suspended_cable_8xL2".
 std::string testName(std::string case_name);
 
