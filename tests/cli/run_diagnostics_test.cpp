@@ -23,13 +23,11 @@ using flexmoor::test::scratch;
 // record of diverge.nc, put in place, is the last converged state, named so.
 TEST(RunDiagnostics, NonConvergenceIsDiagnosedOnStderrWithTheLastConvergedStateInPlace) {
   const fs::path dir = scratch("diverge-stderr");
-  const fs::path file = dir / "diverge.yaml";
   std::string text =
       readFile(fs::path(FLEXMOOR_SOURCE_DIR) / "cases/seed/ex1-suspended-cable-8xL2.yaml");
   text = std::regex_replace(text, std::regex("damping: 10000\\}"), "damping: 10000, max_steps: 1}");
   text = std::regex_replace(text, std::regex("name: ex1-suspended-cable-8xL2"), "name: diverge");
-  std::ofstream(file) << text;
-  const CliRun r = flexmoor("run " + file.string() + " -o " + dir.string());
+  const CliRun r = flexmoor::test::runText(dir, "diverge", text);
   ASSERT_EQ(r.exit_code, 3) << r.output;
   const std::string out = r.output.substr(0, r.output.size() - r.errors.size());
   EXPECT_NE(r.errors.find("did not converge"), std::string::npos) << r.errors;
