@@ -4,7 +4,6 @@
 #include <netcdf.h>
 
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <string>
 
