@@ -100,7 +100,7 @@ void CableElement<N>::bodyLoad(const ElementContext& c, const Vector3d& g,
 
 template <int N>
 void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& load,
-                               Eigen::VectorXd& p) const {
+                               Eigen::VectorXd& p, LoadMatrices* J) const {
   using L = shape::Lagrange1D<N>;
   Coordinates X, Y;
   gather(c, X, Y);
@@ -110,23 +110,43 @@ void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
     A.col(I) = c.state.acceleration.col(nodes()[I]);
   }
   p.setZero(3 * N);
+  if (J) J->setZero(3 * N);
+  const bool per_current_length = load.measure() == model::LengthMeasure::Current;
   const auto& rule = shape::gaussLegendre(quadrature_points_);
   for (int q = 0; q < rule.size(); ++q) {
     const double xi = rule.points[q];
     const typename L::Vector Lv = L::values(xi);
     const typename L::Vector dL = L::derivatives(xi);
     const Vector3d y1 = Y * dL;
-    model::LinePoint point;
+    const double y1_norm = y1.norm();
+    const double x1_norm = (X * dL).norm();
+    model::LoadPoint point;
     point.position = Y * Lv;
     point.velocity = V * Lv;
     point.acceleration = A * Lv;
-    point.tangent = y1.normalized();
-    point.stretch = y1.norm() / (X * dL).norm();
+    point.tangent = y1 / y1_norm;
+    point.stretch = y1_norm / x1_norm;
     point.time = c.state.time;
     point.element = c.index;
-    // Eq. E.1, E.12: load per current length times the current length element |y,1| dxi
-    const Vector3d q_force = load.forcePerLength(point) * (y1.norm() * rule.weights[q]);
-    for (int I = 0; I < N; ++I) p.template segment<3>(3 * I) += Lv(I) * q_force;
+    const model::PointForce f = load.evaluate(point, J != nullptr);
+    // Eq. E.1, E.12: the load per length times the length element, |y,1| dxi on the deformed
+    // line (the dissertation) or |x,1| dxi on the unstretched one (MoorDyn).
+    const double ds = (per_current_length ? y1_norm : x1_norm) * rule.weights[q];
+    for (int I = 0; I < N; ++I) p.template segment<3>(3 * I) += (Lv(I) * ds) * f.force;
+    if (!J) continue;
+    // dt/dy,1 = (I - t t^T) / |y,1|; d(ds)/dy,1 = t^T dxi on the deformed line.
+    const Matrix3d d_tangent =
+        f.d_tangent * (Matrix3d::Identity() - point.tangent * point.tangent.transpose()) / y1_norm;
+    const Vector3d d_ds =
+        per_current_length ? Vector3d(point.tangent * rule.weights[q]) : Vector3d::Zero();
+    for (int I = 0; I < N; ++I)
+      for (int K = 0; K < N; ++K) {
+        const Matrix3d dp = Lv(I) * (ds * (f.d_position * Lv(K) + d_tangent * dL(K)) +
+                                     dL(K) * f.force * d_ds.transpose());
+        J->stiffness.template block<3, 3>(3 * I, 3 * K) -= dp;
+        J->damping.template block<3, 3>(3 * I, 3 * K) -= (Lv(I) * Lv(K) * ds) * f.d_velocity;
+        J->mass.template block<3, 3>(3 * I, 3 * K) -= (Lv(I) * Lv(K) * ds) * f.d_acceleration;
+      }
   }
 }
 

@@ -27,8 +27,8 @@ class CableElement final : public Element {
   void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
   void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
                 Eigen::VectorXd& p) const override;
-  void lineLoad(const ElementContext& c, const model::LineLoad& load,
-                Eigen::VectorXd& p) const override;
+  void lineLoad(const ElementContext& c, const model::LineLoad& load, Eigen::VectorXd& p,
+                LoadMatrices* J) const override;
   ElementResult result(const ElementContext& c) const override;
   // At the integration points and at the ends, where the end tensions are evaluated.
   double minRelativeJacobian(const model::NodalField& X) const override;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "libstruct/model/line_load.hpp"
+#include "libstruct/model/load_point.hpp"
 #include "libstruct/model/state.hpp"
 
 namespace flexmoor::element {
@@ -20,6 +20,17 @@ struct ElementResult {
   std::vector<double> point_tension;  // one per integration point, in the element's order
   double end_tension[2] = {0.0, 0.0};
   std::vector<Eigen::Matrix3d> point_resultant;
+};
+
+// The negative derivatives of an element's nodal loads, the load's share of the tangent:
+// stiffness -dp/du, damping -dp/du', mass -dp/du'' (each 3n x 3n, in the element's dofs).
+struct LoadMatrices {
+  Eigen::MatrixXd stiffness, damping, mass;
+  void setZero(int n) {
+    stiffness.setZero(n, n);
+    damping.setZero(n, n);
+    mass.setZero(n, n);
+  }
 };
 
 struct ElementContext {
@@ -47,9 +58,13 @@ class Element {
   // Nodal loads of a body force per unit mass g (gravity; buoyancy when g is reduced).
   virtual void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
                         Eigen::VectorXd& p) const = 0;
-  // Nodal loads of a distributed line load; elements that are not lines add nothing.
-  virtual void lineLoad(const ElementContext&, const model::LineLoad&, Eigen::VectorXd& p) const {
+  // Nodal loads p = int N^T f ds of a line load f evaluated at the integration points on the
+  // current configuration; when J is given, also its matrices (-dp/du, -dp/du', -dp/du'') from
+  // int N^T (df/dq) N ds and the derivative of ds. Elements that are not lines add nothing.
+  virtual void lineLoad(const ElementContext&, const model::LineLoad&, Eigen::VectorXd& p,
+                        LoadMatrices* J) const {
     p.setZero(dofCount());
+    if (J) J->setZero(dofCount());
   }
   // Follower pressure p on the deformed surface (Eq. 3.30-3.37): nodal forces f and, when dfdu is
   // given, the load stiffness df/du (non-symmetric). Elements that are not surfaces add nothing.

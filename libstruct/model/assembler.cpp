@@ -5,50 +5,66 @@
 
 namespace flexmoor::model {
 
+namespace {
+
+// Value slot in the compressed pattern of each (a, b) of a block of equations (-1 where a or b is
+// constrained), column-major like the block.
+std::vector<int> blockSlots(const SparseMatrix& pattern, const std::vector<int>& eq) {
+  const int* outer = pattern.outerIndexPtr();
+  const int* inner = pattern.innerIndexPtr();
+  const int m = static_cast<int>(eq.size());
+  std::vector<int> slots(m * m, -1);
+  for (int b = 0; b < m; ++b) {
+    if (eq[b] < 0) continue;
+    for (int a = 0; a < m; ++a) {
+      if (eq[a] < 0) continue;
+      const int* begin = inner + outer[eq[b]];
+      const int* end = inner + outer[eq[b] + 1];
+      slots[a + m * b] = static_cast<int>(std::lower_bound(begin, end, eq[a]) - inner);
+    }
+  }
+  return slots;
+}
+
+}  // namespace
+
 Assembler::Assembler(const Model& model) : model_(model) {
   const int n_eq = model.equationCount();
   std::vector<Eigen::Triplet<double>> entries;
   for (int i = 0; i < n_eq; ++i) entries.emplace_back(i, i, 0.0);
+  const auto add_block = [&](const std::vector<int>& eq) {
+    for (int a : eq)
+      for (int b : eq)
+        if (a >= 0 && b >= 0) entries.emplace_back(a, b, 0.0);
+  };
+  const auto node_equations = [&](int n) {
+    return std::vector<int>{model.equation(n, 0), model.equation(n, 1), model.equation(n, 2)};
+  };
   full_index_.resize(model.elementCount());
   std::vector<std::vector<int>> equations(model.elementCount());
   for (int e = 0; e < model.elementCount(); ++e) {
-    const auto& nodes = model.element(e).nodes();
-    for (int n : nodes)
+    for (int n : model.element(e).nodes())
       for (int k = 0; k < 3; ++k) {
         full_index_[e].push_back(3 * n + k);
         equations[e].push_back(model.equation(n, k));
       }
-    for (int a : equations[e])
-      for (int b : equations[e])
-        if (a >= 0 && b >= 0) entries.emplace_back(a, b, 0.0);
+    add_block(equations[e]);
   }
+  for (const auto& load : model.nodeLoads()) add_block(node_equations(load->node()));
   pattern_.resize(n_eq, n_eq);
   pattern_.setFromTriplets(entries.begin(), entries.end());
   pattern_.makeCompressed();
 
-  slot_.resize(model.elementCount());
-  const int* outer = pattern_.outerIndexPtr();
-  const int* inner = pattern_.innerIndexPtr();
-  for (int e = 0; e < model.elementCount(); ++e) {
-    const auto& eq = equations[e];
-    const int m = static_cast<int>(eq.size());
-    slot_[e].assign(m * m, -1);
-    for (int b = 0; b < m; ++b) {
-      if (eq[b] < 0) continue;
-      for (int a = 0; a < m; ++a) {
-        if (eq[a] < 0) continue;
-        const int* begin = inner + outer[eq[b]];
-        const int* end = inner + outer[eq[b] + 1];
-        slot_[e][a + m * b] = static_cast<int>(std::lower_bound(begin, end, eq[a]) - inner);
-      }
-    }
-  }
+  for (int e = 0; e < model.elementCount(); ++e)
+    slot_.push_back(blockSlots(pattern_, equations[e]));
+  for (const auto& load : model.nodeLoads())
+    node_slot_.push_back(blockSlots(pattern_, node_equations(load->node())));
 }
 
 template <class ElementMatrix>
-void Assembler::scatterMatrix(int e, const ElementMatrix& k, SparseMatrix& K) const {
+void Assembler::scatterMatrix(const std::vector<int>& slots, const ElementMatrix& k,
+                              SparseMatrix& K) const {
   double* values = K.valuePtr();
-  const auto& slots = slot_[e];
   const int m = static_cast<int>(k.rows());
   for (int b = 0; b < m; ++b)
     for (int a = 0; a < m; ++a) {
@@ -69,7 +85,7 @@ void Assembler::internalForce(const State& state, Eigen::VectorXd& force, Sparse
     model_.element(e).internalForce(context(state, e), f, K ? &k : nullptr);
     const auto& index = full_index_[e];
     for (size_t a = 0; a < index.size(); ++a) force(index[a]) += f(a);
-    if (K) scatterMatrix(e, k, *K);
+    if (K) scatterMatrix(slot_[e], k, *K);
   }
 }
 
@@ -81,7 +97,7 @@ void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load) co
     load += p;
   }
   for (const auto& line : model_.lineLoads()) {
-    model_.element(e).lineLoad(context(state, e), *line, p);
+    model_.element(e).lineLoad(context(state, e), *line, p, nullptr);
     load += p;
   }
   load *= state.load_factor;
@@ -100,6 +116,9 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
     }
   for (const NodalLoad& p : model_.nodalLoads())
     if (p.history) load.segment<3>(3 * p.node) += p.history->value(state.time) * p.force;
+  for (const auto& node_load : model_.nodeLoads())
+    load.segment<3>(3 * node_load->node()) +=
+        state.load_factor * node_load->evaluate(nodePoint(state, node_load->node()), false).force;
   for (const PressureLoad& pressure : model_.pressures()) {
     const double value = pressureFactor(pressure, state);
     for (int e : pressure.elements) {
@@ -107,6 +126,43 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
       const auto& index = full_index_[e];
       for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
     }
+  }
+}
+
+LoadPoint Assembler::nodePoint(const State& state, int node) const {
+  LoadPoint p;
+  p.position = model_.reference().col(node) + state.displacement.col(node);
+  p.velocity = state.velocity.col(node);
+  p.acceleration = state.acceleration.col(node);
+  p.time = state.time;
+  p.node = node;
+  return p;
+}
+
+void Assembler::loadMatrices(const State& state, LoadMatrices& J) const {
+  for (SparseMatrix* m : {&J.stiffness, &J.damping, &J.mass}) {
+    *m = pattern_;
+    m->coeffs().setZero();
+  }
+  const double lambda = state.load_factor;
+  Eigen::VectorXd p;
+  element::LoadMatrices k;
+  for (const auto& line : model_.lineLoads()) {
+    if (!line->stiff()) continue;
+    for (int e = 0; e < model_.elementCount(); ++e) {
+      model_.element(e).lineLoad(context(state, e), *line, p, &k);
+      scatterMatrix(slot_[e], (lambda * k.stiffness).eval(), J.stiffness);
+      scatterMatrix(slot_[e], (lambda * k.damping).eval(), J.damping);
+      scatterMatrix(slot_[e], (lambda * k.mass).eval(), J.mass);
+    }
+  }
+  const auto& node_loads = model_.nodeLoads();
+  for (size_t i = 0; i < node_loads.size(); ++i) {
+    if (!node_loads[i]->stiff()) continue;
+    const PointForce f = node_loads[i]->evaluate(nodePoint(state, node_loads[i]->node()), true);
+    scatterMatrix(node_slot_[i], (-lambda * f.d_position).eval(), J.stiffness);
+    scatterMatrix(node_slot_[i], (-lambda * f.d_velocity).eval(), J.damping);
+    scatterMatrix(node_slot_[i], (-lambda * f.d_acceleration).eval(), J.mass);
   }
 }
 
@@ -121,7 +177,7 @@ void Assembler::subtractLoadStiffness(const State& state, SparseMatrix& K) const
     const double value = pressureFactor(pressure, state);
     for (int e : pressure.elements) {
       model_.element(e).pressureLoad(context(state, e), value, p, &dp);
-      scatterMatrix(e, (-dp).eval(), K);
+      scatterMatrix(slot_[e], (-dp).eval(), K);
     }
   }
 }
@@ -153,7 +209,7 @@ void Assembler::mass(const State& state, element::MassKind kind, SparseMatrix& M
   Eigen::MatrixXd m;
   for (int e = 0; e < model_.elementCount(); ++e) {
     model_.element(e).mass(context(state, e), kind, m);
-    scatterMatrix(e, m, M);
+    scatterMatrix(slot_[e], m, M);
   }
 }
 

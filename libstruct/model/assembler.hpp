@@ -11,6 +11,12 @@ namespace flexmoor::model {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
+// The negative derivatives of the motion-dependent loads (line and node loads) on the free dofs,
+// on the assembler's pattern: stiffness -dP/du, damping -dP/du', mass -dP/du''.
+struct LoadMatrices {
+  SparseMatrix stiffness, damping, mass;
+};
+
 class Assembler {
  public:
   explicit Assembler(const Model& model);
@@ -21,8 +27,11 @@ class Assembler {
 
   // Internal force F(u) as a full vector; with K, also the tangent on the free dofs (Eq. 4.48).
   void internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const;
-  // External load P at the state's load factor: nodal loads, gravity and line loads.
+  // External load P at the state's load factor: nodal loads, gravity, line and node loads.
   void externalLoad(const State& state, Eigen::VectorXd& load) const;
+  // The motion-dependent loads' matrices at the state (zero when the model has none). Loads that
+  // are not stiff() add nothing.
+  void loadMatrices(const State& state, LoadMatrices& J) const;
   // Subtracts the follower-pressure load stiffness dP/du from K (K - dP/du: non-symmetric).
   void subtractLoadStiffness(const State& state, SparseMatrix& K) const;
   // Element mass matrices (Eq. 4.40, 4.49), in element order. They depend on the reference
@@ -52,7 +61,8 @@ class Assembler {
     return {model_.reference(), state, e};
   }
   template <class ElementMatrix>
-  void scatterMatrix(int e, const ElementMatrix& k, SparseMatrix& K) const;
+  void scatterMatrix(const std::vector<int>& slots, const ElementMatrix& k, SparseMatrix& K) const;
+  LoadPoint nodePoint(const State& state, int node) const;
 
   double pressureFactor(const PressureLoad& load, const State& state) const;
   // Element e's own share of the proportional loads (gravity, line loads) at the load factor.
@@ -67,6 +77,7 @@ class Assembler {
   SparseMatrix pattern_;
   std::vector<std::vector<int>> full_index_;  // per element: full index of each local dof
   std::vector<std::vector<int>> slot_;        // per element: value slot of each (a, b), or -1
+  std::vector<std::vector<int>> node_slot_;   // per node load: slot of each (a, b) of its node
   // Consistent element masses for the end-force balance, computed on first use (total
   // Lagrangian: they depend on the reference configuration only).
   mutable std::vector<Eigen::MatrixXd> consistent_masses_;

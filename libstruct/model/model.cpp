@@ -50,6 +50,20 @@ void Model::addNodalLoad(int node, const Eigen::Vector3d& force,
   nodal_loads_.push_back({node, force, std::move(history)});
 }
 
+void Model::addNodeLoad(std::shared_ptr<const NodeLoad> load) {
+  if (load->node() < 0 || load->node() >= nodeCount())
+    throw std::out_of_range("node load at node " + std::to_string(load->node()) + " of " +
+                            std::to_string(nodeCount()));
+  node_loads_.push_back(std::move(load));
+}
+
+void Model::release(int node, int component) {
+  constrained_(component, node) = false;
+  prescribed_(component, node) = 0.0;
+  motion_[3 * node + component] = nullptr;
+  numberEquations();
+}
+
 void Model::numberEquations() {
   equation_.resize(3, nodeCount());
   equation_count_ = 0;

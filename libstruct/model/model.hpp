@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "libstruct/element/element.hpp"
-#include "libstruct/model/line_load.hpp"
+#include "libstruct/model/load_point.hpp"
 #include "libstruct/model/state.hpp"
 #include "libstruct/model/time_function.hpp"
 
@@ -42,7 +42,12 @@ class Model {
                     std::shared_ptr<const TimeFunction> history = nullptr);
   void addPressure(PressureLoad load) { pressures_.push_back(std::move(load)); }
   void setGravity(const Eigen::Vector3d& g) { gravity_ = g; }
+  // Loads that depend on the motion (load_point.hpp), scaled by the load factor like gravity.
   void addLineLoad(std::shared_ptr<const LineLoad> load) { line_loads_.push_back(std::move(load)); }
+  void addNodeLoad(std::shared_ptr<const NodeLoad> load);
+  // Frees a constrained dof (a held buoy let go) and numbers the equations again; an Assembler
+  // built before must be built again.
+  void release(int node, int component);
 
   int nodeCount() const { return static_cast<int>(reference_.cols()); }
   int elementCount() const { return static_cast<int>(elements_.size()); }
@@ -53,6 +58,8 @@ class Model {
   const std::vector<PressureLoad>& pressures() const { return pressures_; }
   const Eigen::Vector3d& gravity() const { return gravity_; }
   const std::vector<std::shared_ptr<const LineLoad>>& lineLoads() const { return line_loads_; }
+  const std::vector<std::shared_ptr<const NodeLoad>>& nodeLoads() const { return node_loads_; }
+  bool hasMotionLoads() const { return !line_loads_.empty() || !node_loads_.empty(); }
 
   bool isConstrained(int node, int component) const { return constrained_(component, node); }
   double prescribed(int node, int component) const { return prescribed_(component, node); }
@@ -80,6 +87,7 @@ class Model {
   std::vector<PressureLoad> pressures_;
   Eigen::Vector3d gravity_ = Eigen::Vector3d::Zero();
   std::vector<std::shared_ptr<const LineLoad>> line_loads_;
+  std::vector<std::shared_ptr<const NodeLoad>> node_loads_;
 };
 
 }  // namespace flexmoor::model

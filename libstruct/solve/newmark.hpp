@@ -7,17 +7,11 @@
 #include "libstruct/model/assembler.hpp"
 #include "libstruct/solve/solve_log.hpp"
 #include "libstruct/solve/solver_options.hpp"
+#include "libstruct/solve/time_integrator.hpp"
 
 namespace flexmoor::solve {
 
-struct DynamicReport {
-  int steps = 0;       // accepted steps, cut sub-steps included
-  int iterations = 0;  // Newton iterations over all steps
-  int cuts = 0;        // how often a step was halved
-  int tangent_updates = 0;
-};
-
-// Integrates from state.time over the schedule, at options.load_factor when it is set (else at the
+// Integrates from state.time over the schedule (a loop of TimeIntegrator::step), at options.load_factor when it is set (else at the
 // state's). The start acceleration is the one the state carries when an earlier integration
 // accepted it under the same load factor and equation of motion (state.motion), and is solved for
 // from equilibrium otherwise. `on_step` sees every accepted state. On failure throws

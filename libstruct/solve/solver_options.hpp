@@ -100,6 +100,11 @@ struct DynamicOptions {
   double rayleigh_mass = 0.0;  // C = rayleigh_mass M + rayleigh_stiffness K_T(start of step)
   double rayleigh_stiffness = 0.0;
   int max_step_cuts = 6;  // a failed step is halved, at most this many times
+  // The motion-dependent loads' stiffness, damping and added mass in the effective tangent
+  // (non-symmetric: LU): evaluated at the first iteration of every step, at every iteration, or
+  // never (their forces stay in the residual; only to measure what the matrices are worth).
+  enum class LoadMatrixUpdate { Step, Iteration, Off };
+  LoadMatrixUpdate load_matrices = LoadMatrixUpdate::Step;
 };
 
 }  // namespace flexmoor::solve

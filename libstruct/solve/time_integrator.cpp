@@ -1,0 +1,281 @@
+#include "libstruct/solve/time_integrator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "libstruct/solve/equilibrium.hpp"
+
+namespace flexmoor::solve {
+namespace {
+
+using Eigen::VectorXd;
+
+// Writes the free-dof values into a nodal field, leaving the constrained dofs as they are.
+void setFree(const model::Model& m, const VectorXd& values, model::NodalField& field) {
+  for (int n = 0; n < m.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k)
+      if (const int eq = m.equation(n, k); eq >= 0) field(k, n) = values(eq);
+}
+
+}  // namespace
+
+TimeIntegrator::TimeIntegrator(const model::Assembler& assembler, const DynamicOptions& options,
+                               const SolveLog& log)
+    : model_(assembler.model()),
+      assembler_(assembler),
+      o_(options),
+      log_(log),
+      gamma_(options.gamma),
+      beta_(options.beta),
+      alpha_(options.hht_alpha),
+      motion_loads_(assembler.model().hasMotionLoads() &&
+                    options.load_matrices != DynamicOptions::LoadMatrixUpdate::Off),
+      linear_(motion_loads_ ? MatrixKind::Unsymmetric : MatrixKind::Symmetric) {
+  if (alpha_ != 0.0) {
+    gamma_ = 0.5 - alpha_;
+    beta_ = 0.25 * (1.0 - alpha_) * (1.0 - alpha_);
+  }
+  masses_ = assembler_.elementMasses(o_.mass);
+  assembler_.mass(model_.initialState(), o_.mass, M_);
+}
+
+// Damping force C v on the free dofs, C = rayleigh_mass M + rayleigh_stiffness K0.
+VectorXd TimeIntegrator::damping(const VectorXd& v_free) const {
+  VectorXd f = VectorXd::Zero(v_free.size());
+  if (o_.rayleigh_mass != 0.0) f += o_.rayleigh_mass * (M_ * v_free);
+  if (o_.rayleigh_stiffness != 0.0) f += o_.rayleigh_stiffness * (K0_ * v_free);
+  return f;
+}
+
+bool TimeIntegrator::loadMatricesWanted(int iteration) const {
+  if (!motion_loads_) return false;
+  return o_.load_matrices == DynamicOptions::LoadMatrixUpdate::Iteration || iteration == 0;
+}
+
+// Effective tangent (Eq. 4.63): (1 + alpha) (K_T + K_L) + gamma / (beta h) ((1 + alpha) C + ...)
+// + a0 (M + (1 + alpha) M_L), with C = a_M M + a_K K0 and the motion loads' stiffness K_L,
+// damping C_L and added mass M_L. Everything is assembled on the assembler's one pattern, so the
+// sum is taken coefficient by coefficient, without a sparse merge or an allocation.
+void TimeIntegrator::factorEffectiveTangent(double h) {
+  const double a0 = 1.0 / (beta_ * h * h);
+  const double c = (1.0 + alpha_) * gamma_ / (beta_ * h);
+  Keff_ = K_;
+  Keff_.coeffs() = (1.0 + alpha_) * K_.coeffs() + (a0 + c * o_.rayleigh_mass) * M_.coeffs();
+  if (o_.rayleigh_stiffness != 0.0) Keff_.coeffs() += (c * o_.rayleigh_stiffness) * K0_.coeffs();
+  if (motion_loads_)
+    Keff_.coeffs() += (1.0 + alpha_) * loads_.stiffness.coeffs() + c * loads_.damping.coeffs() +
+                      ((1.0 + alpha_) * a0) * loads_.mass.coeffs();
+  if (!linear_.factorize(Keff_)) {
+    singular_ = true;
+    return;
+  }
+  factor_h_ = h;
+  ++report_.tangent_updates;
+}
+
+// The supports at the end of a (sub-)step: their model histories, or the motion drive() set.
+void TimeIntegrator::applySupports(model::State& next, const model::State& previous,
+                                   double h) const {
+  assembler_.applyPrescribed(next);
+  for (const auto& [dof, t] : targets_) {
+    const auto [n, k] = dof;
+    const double f = std::clamp((next.time - t.start_time) / t.duration, 0.0, 1.0);
+    next.displacement(k, n) = t.start_u + f * (t.end_u - t.start_u);
+    next.velocity(k, n) = t.start_v + f * (t.end_v - t.start_v);
+    next.acceleration(k, n) = (next.velocity(k, n) - previous.velocity(k, n)) / h;
+  }
+}
+
+bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
+  const double a0 = 1.0 / (beta_ * h * h), a1 = 1.0 / (beta_ * h), a2 = 0.5 / beta_ - 1.0;
+  const VectorXd u_n = assembler_.restrictToFree(asVector(s.displacement));
+  const VectorXd v_n = assembler_.restrictToFree(asVector(s.velocity));
+  const VectorXd acc_n = assembler_.restrictToFree(asVector(s.acceleration));
+  if (o_.rayleigh_stiffness != 0.0) {
+    VectorXd F;
+    assembler_.internalForce(s, F, &K0_);
+  }
+  VectorXd previous_balance;  // HHT: P_n - F_n - C v_n
+  if (alpha_ != 0.0) previous_balance = outOfBalance(assembler_, s, nullptr).free - damping(v_n);
+
+  model::State next = s;
+  next.time = s.time + h;
+  applySupports(next, s, h);
+  VectorXd u = u_n;  // predictor: the displacement of the last step
+  const bool refresh_each_step =
+      o_.flavour == NewtonFlavour::Full || o_.flavour == NewtonFlavour::SelfCorrective ||
+      steps_since_update_ + 1 >= std::max(1, o_.stiffness_update) || h != factor_h_;
+  trace_.start();
+  singular_ = false;
+  for (int it = 0; it <= o_.max_iterations; ++it) {
+    const VectorXd acc = a0 * (u - u_n) - a1 * v_n - a2 * acc_n;           // Eq. 4.57
+    const VectorXd v = v_n + h * ((1.0 - gamma_) * acc_n + gamma_ * acc);  // Eq. 4.58
+    setFree(model_, u, next.displacement);
+    setFree(model_, v, next.velocity);
+    setFree(model_, acc, next.acceleration);
+    const bool update = o_.flavour == NewtonFlavour::Full ? true : (it == 0 && refresh_each_step);
+    Residual R = outOfBalance(assembler_, next, update ? &K_ : nullptr);
+    VectorXd inertia_full;
+    assembler_.inertiaForce(masses_, next, inertia_full);
+    const VectorXd inertia = assembler_.restrictToFree(inertia_full);
+    R.free = (1.0 + alpha_) * (R.free - damping(v)) - inertia;  // Eq. 4.63
+    if (alpha_ != 0.0) R.free -= alpha_ * previous_balance;
+    // The forces pass through zero twice a period, so the residual is measured against the
+    // largest force seen in the run, not the instantaneous one (round-off would stall Newton).
+    const double scale = std::max({R.scale, inertia_full.norm(), force_scale_});
+    if (update) floor_ = R.floor * R.scale / scale;
+    R.scale = scale;
+    rec.residual_norm = R.relative();
+    trace_.residual(rec.residual_norm);
+    if (it > 0) {
+      if (o_.flavour == NewtonFlavour::SelfCorrective ||  // Eq. 4.20: one solve, accepted
+          converged(o_.convergence, rec.displacement_norm, rec.residual_norm, floor_)) {
+        force_scale_ = R.scale;
+        s = next;
+        steps_since_update_ = refresh_each_step ? 0 : steps_since_update_ + 1;
+        s.motion = record(s);
+        return true;
+      }
+    }
+    if (!std::isfinite(rec.residual_norm) || it == o_.max_iterations) return false;
+    const bool update_loads = loadMatricesWanted(it);
+    if (update_loads) {
+      assembler_.loadMatrices(next, loads_);
+      ++report_.load_matrix_updates;
+    }
+    if (update || update_loads) {
+      factorEffectiveTangent(h);
+      if (singular_) return false;
+    }
+    const VectorXd du = linear_.solve(R.free);
+    u += du;
+    trace_.increment(model_, du);
+    ++report_.iterations;
+    rec.iteration = it + 1;
+    const double u_norm = u.norm();
+    rec.displacement_norm = u_norm > 0.0 ? du.norm() / u_norm : du.norm();  // Eq. 5.1
+  }
+  return false;
+}
+
+void TimeIntegrator::advance(model::State& s, double h, int depth,
+                             const std::function<void(const model::State&)>& on_step) {
+  IterationRecord rec{report_.steps + 1, 0, s.load_factor, 0.0, 0.0};
+  if (attempt(s, h, rec)) {
+    ++report_.steps;
+    log_.report(rec);
+    if (on_step) on_step(s);
+    return;
+  }
+  if (depth >= o_.max_step_cuts) {
+    std::ostringstream m;
+    m << "time step at t = " << s.time << " s did not converge even with dt = " << h << " s ("
+      << rec.iteration << " iterations, displacement norm " << rec.displacement_norm
+      << ", residual " << rec.residual_norm << "): ";
+    if (singular_)
+      m << "the effective tangent K + M / (beta dt^2) is singular: a free dof has neither mass "
+           "nor stiffness";
+    else
+      m << trace_.diagnosis(log_);
+    if (trace_.lost())
+      m << " (a displacement running away there is a motion nothing resists: a mechanism, a "
+           "slack line, or a load the structure cannot carry)";
+    throw ConvergenceError(m.str(), rec);
+  }
+  ++report_.cuts;
+  std::ostringstream m;
+  m << "t = " << s.time << " s: Newton failed with dt = " << h << " s, halving";
+  log_.say(m.str());
+  advance(s, 0.5 * h, depth + 1, on_step);
+  advance(s, 0.5 * h, depth + 1, on_step);
+}
+
+void TimeIntegrator::step(model::State& s, double dt,
+                          const std::function<void(const model::State&)>& on_step) {
+  for (auto& [dof, t] : targets_) {
+    t.start_u = s.displacement(dof.second, dof.first);
+    t.start_v = s.velocity(dof.second, dof.first);
+    t.start_time = s.time;
+    t.duration = dt;
+  }
+  try {
+    advance(s, dt, 0, on_step);
+  } catch (...) {
+    targets_.clear();
+    throw;
+  }
+  targets_.clear();
+}
+
+void TimeIntegrator::drive(int node, int component, double displacement, double velocity) {
+  if (node < 0 || node >= model_.nodeCount() || component < 0 || component > 2 ||
+      !model_.isConstrained(node, component))
+    throw std::invalid_argument("drive: node " + std::to_string(node) + " component " +
+                                std::to_string(component) + " is not a constrained dof");
+  targets_[{node, component}] = Target{0.0, 0.0, displacement, velocity, 0.0, 0.0};
+}
+
+// u'' at the start from equilibrium: (M + M_L) a = P - F - C v - M_p a_p on the free dofs, with
+// P taken at zero free acceleration, M_L the motion loads' added mass and M_p a_p the inertia of
+// the prescribed supports' accelerations; zero if the mass is singular.
+void TimeIntegrator::initialAcceleration(model::State& s) {
+  assembler_.applyPrescribed(s);
+  setFree(model_, VectorXd::Zero(model_.equationCount()), s.acceleration);
+  VectorXd inertia_full;
+  assembler_.inertiaForce(masses_, s, inertia_full);  // prescribed accelerations only
+  const VectorXd rhs = outOfBalance(assembler_, s, nullptr).free -
+                       assembler_.restrictToFree(inertia_full) -
+                       damping(assembler_.restrictToFree(asVector(s.velocity)));
+  model::SparseMatrix mass = M_;
+  if (model_.hasMotionLoads()) {
+    assembler_.loadMatrices(s, loads_);
+    mass.coeffs() += loads_.mass.coeffs();
+  }
+  LinearSolver mass_solver(model_.hasMotionLoads() ? MatrixKind::Unsymmetric
+                                                   : MatrixKind::Symmetric);
+  if (mass_solver.factorize(mass)) setFree(model_, mass_solver.solve(rhs), s.acceleration);
+}
+
+void TimeIntegrator::start(model::State& s) {
+  if (o_.load_factor) s.load_factor = *o_.load_factor;
+  const model::MotionRecord& r = s.motion;
+  const bool same = r.valid && r.load_factor == s.load_factor &&
+                    r.mass_kind == static_cast<int>(o_.mass) &&
+                    r.rayleigh_mass == o_.rayleigh_mass &&
+                    r.rayleigh_stiffness == o_.rayleigh_stiffness && r.hht_alpha == alpha_;
+  if (same) {
+    force_scale_ = r.force_scale;
+    assembler_.applyPrescribed(s);
+  } else {
+    initialAcceleration(s);
+  }
+  s.motion = record(s);
+}
+
+model::MotionRecord TimeIntegrator::record(const model::State& s) const {
+  model::MotionRecord r;
+  r.valid = true;
+  r.load_factor = s.load_factor;
+  r.mass_kind = static_cast<int>(o_.mass);
+  r.rayleigh_mass = o_.rayleigh_mass;
+  r.rayleigh_stiffness = o_.rayleigh_stiffness;
+  r.hht_alpha = alpha_;
+  r.force_scale = force_scale_;
+  return r;
+}
+
+IntegratorCheckpoint TimeIntegrator::save(const model::State& s) const {
+  return {s, steps_since_update_, force_scale_};
+}
+
+void TimeIntegrator::restore(const IntegratorCheckpoint& checkpoint, model::State& s) {
+  s = checkpoint.state;
+  steps_since_update_ = checkpoint.steps_since_update;
+  force_scale_ = checkpoint.force_scale;
+  factor_h_ = -1.0;  // the factorisation belongs to a later state: the next step makes its own
+  targets_.clear();
+}
+
+}  // namespace flexmoor::solve

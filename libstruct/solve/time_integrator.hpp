@@ -1,0 +1,95 @@
+#pragma once
+// A Newmark time integrator a caller steps (Eq. 4.55-4.63): initialise once, step(dt) with
+// automatic step cutting, save and restore its state, and drive supports between steps (a
+// scenario's fairlead now, a host code through the C API later). integrate() is a loop over it.
+// Motion-dependent loads (load_point.hpp) enter the effective tangent with their stiffness,
+// damping and added mass, so light lines in water converge at a useful step size.
+#include <functional>
+#include <map>
+#include <utility>
+
+#include "libstruct/model/assembler.hpp"
+#include "libstruct/solve/diagnosis.hpp"
+#include "libstruct/solve/linear_solver.hpp"
+#include "libstruct/solve/solve_log.hpp"
+#include "libstruct/solve/solver_options.hpp"
+
+namespace flexmoor::solve {
+
+struct DynamicReport {
+  int steps = 0;       // accepted steps, cut sub-steps included
+  int iterations = 0;  // Newton iterations over all steps
+  int cuts = 0;        // how often a step was halved
+  int tangent_updates = 0;
+  int load_matrix_updates = 0;  // evaluations of the motion-dependent loads' matrices
+};
+
+// What save() keeps and restore() puts back: the state and the integrator's own memory (how far
+// the modified-Newton schedule has gone, the residual test's force scale).
+struct IntegratorCheckpoint {
+  model::State state;
+  int steps_since_update = 0;
+  double force_scale = 0.0;
+};
+
+class TimeIntegrator {
+ public:
+  // `assembler` and `options` must outlive the integrator.
+  TimeIntegrator(const model::Assembler& assembler, const DynamicOptions& options,
+                 const SolveLog& log = {});
+
+  // Makes `s` ready to step: at options.load_factor when it is set, continuing from the
+  // acceleration an earlier integration accepted under the same equation of motion
+  // (state.motion), or else from u'' solved for from equilibrium.
+  void start(model::State& s);
+  // Advances `s` by dt, halving on failure down to options.max_step_cuts levels; `on_step` sees
+  // every accepted (sub-)step. Throws ConvergenceError with `s` at the last accepted step.
+  void step(model::State& s, double dt,
+            const std::function<void(const model::State&)>& on_step = {});
+
+  // Drives a constrained dof over the next step(): its displacement and velocity at the step's
+  // end (interpolated linearly in time over cut sub-steps; the acceleration is the velocity's
+  // change over the sub-step). Afterwards the dof follows its model history again unless driven
+  // anew.
+  void drive(int node, int component, double displacement, double velocity);
+
+  IntegratorCheckpoint save(const model::State& s) const;
+  void restore(const IntegratorCheckpoint& checkpoint, model::State& s);
+
+  const DynamicReport& report() const { return report_; }
+
+ private:
+  struct Target {
+    double start_u, start_v, end_u, end_v, start_time, duration;
+  };
+  bool attempt(model::State& s, double h, IterationRecord& rec);
+  void advance(model::State& s, double h, int depth,
+               const std::function<void(const model::State&)>& on_step);
+  void applySupports(model::State& next, const model::State& previous, double h) const;
+  void initialAcceleration(model::State& s);
+  Eigen::VectorXd damping(const Eigen::VectorXd& v_free) const;
+  bool loadMatricesWanted(int iteration) const;
+  void factorEffectiveTangent(double h);
+  model::MotionRecord record(const model::State& s) const;
+
+  const model::Model& model_;
+  const model::Assembler& assembler_;
+  const DynamicOptions& o_;
+  SolveLog log_;
+  double gamma_, beta_, alpha_;
+  bool motion_loads_;                      // the model has stiff motion-dependent loads in use
+  std::vector<Eigen::MatrixXd> masses_;    // element mass matrices, constant
+  model::SparseMatrix M_, K_, K0_, Keff_;  // on the assembler's pattern
+  model::LoadMatrices loads_;              // the motion loads' matrices at their last update
+  LinearSolver linear_;
+  std::map<std::pair<int, int>, Target> targets_;  // driven dofs of the step under way
+  DynamicReport report_;
+  double factor_h_ = -1.0;
+  int steps_since_update_ = 0;
+  double force_scale_ = 0.0;  // largest force norm of the accepted steps
+  double floor_ = 0.0;        // round-off floor of the residual at the last tangent
+  NewtonTrace trace_;         // of the last step tried
+  bool singular_ = false;     // the last step tried had a singular effective tangent
+};
+
+}  // namespace flexmoor::solve
