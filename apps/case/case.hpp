@@ -35,6 +35,9 @@ struct StepSpec {
   solve::ModalOptions modes;
   solve::DynamicOptions dynamic;
   int output_every = 1;  // dynamic: write every N-th accepted time step (the last one always)
+  // Supports let go at the start of the step (node, component): a held buoy released. They stay
+  // free in the steps after.
+  std::vector<std::pair<int, int>> release;
   SourceLocation where;
 };
 

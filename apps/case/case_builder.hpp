@@ -93,6 +93,7 @@ struct CaseBuilder {
   // one that prescribes another value.
   std::unordered_map<long long, int> support_line;
 
+  std::set<std::pair<int, int>> released;  // (node, component) freed by a step's release:
   // Adds a node with the next free id (after the largest so far).
   int addGeneratedNode(const Eigen::Vector3d& position, int line);
   int largestId() const { return node_of_id.empty() ? 0 : node_of_id.rbegin()->first; }
@@ -150,6 +151,9 @@ std::optional<std::vector<int>> nodeListRef(CaseBuilder& b, const YAML::Node& n,
                                             const std::string& path);
 // `node: REF` or `nodes: LIST` (exactly one of them) in a map.
 std::optional<std::vector<int>> nodeOrNodes(CaseBuilder& b, Fields& f);
+// A list of dofs from x, y, z, each once: [x, z] -> {0, 2}.
+std::optional<std::vector<int>> readFix(CaseBuilder& b, const YAML::Node& n,
+                                        const std::string& path);
 
 // Checks that a name can be used to refer to something (a word without '.', not a number).
 bool checkName(CaseBuilder& b, const YAML::Node& at, const std::string& path,

@@ -9,27 +9,6 @@ namespace {
 
 const char* const kAxis[] = {"x", "y", "z"};
 
-// fix: [x, z] -> {0, 2}
-std::optional<std::vector<int>> readFix(CaseBuilder& b, const YAML::Node& n,
-                                        const std::string& path) {
-  if (!n.IsSequence() || n.size() < 1 || n.size() > 3) {
-    b.diag.error(n, path + ": expected a list of the dofs to fix, from x, y, z (got " +
-                        describeNode(n) + ")");
-    return std::nullopt;
-  }
-  std::vector<int> fix;
-  for (size_t i = 0; i < n.size(); ++i) {
-    const auto k = b.in.choice<int>(n[i], itemPath(path, i), {{"x", 0}, {"y", 1}, {"z", 2}});
-    if (!k) return std::nullopt;
-    if (std::find(fix.begin(), fix.end(), *k) != fix.end()) {
-      b.diag.error(n[i], itemPath(path, i) + ": " + kAxis[*k] + " is given twice");
-      return std::nullopt;
-    }
-    fix.push_back(*k);
-  }
-  return fix;
-}
-
 // The prescribed displacement of each fixed dof, in the order of `fix`: `displacement:` lists
 // them in that order, or gives the full [x, y, z] with zeros at the free dofs. Zero by default.
 std::optional<std::vector<double>> readPrescribed(CaseBuilder& b, Fields& f,
@@ -161,6 +140,27 @@ void readGravity(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
 }
 
 }  // namespace
+
+// fix: [x, z] -> {0, 2} (also a step's release: dofs).
+std::optional<std::vector<int>> readFix(CaseBuilder& b, const YAML::Node& n,
+                                        const std::string& path) {
+  if (!n.IsSequence() || n.size() < 1 || n.size() > 3) {
+    b.diag.error(n, path + ": expected a list of the dofs to fix, from x, y, z (got " +
+                        describeNode(n) + ")");
+    return std::nullopt;
+  }
+  std::vector<int> fix;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const auto k = b.in.choice<int>(n[i], itemPath(path, i), {{"x", 0}, {"y", 1}, {"z", 2}});
+    if (!k) return std::nullopt;
+    if (std::find(fix.begin(), fix.end(), *k) != fix.end()) {
+      b.diag.error(n[i], itemPath(path, i) + ": " + kAxis[*k] + " is given twice");
+      return std::nullopt;
+    }
+    fix.push_back(*k);
+  }
+  return fix;
+}
 
 void readSupports(CaseBuilder& b, const YAML::Node& n) {
   const std::vector<YAML::Node> items = listItems(b.diag, n, "supports");

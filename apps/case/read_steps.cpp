@@ -239,7 +239,47 @@ void readDynamic(CaseBuilder& b, Fields& f, StepSpec& step) {
   }
   if (const YAML::Node* n = f.find("max_step_cuts"))
     o.max_step_cuts = in.integer(*n, f.path("max_step_cuts"), 0).value_or(o.max_step_cuts);
+  if (const YAML::Node* n = f.find("pressure_stiffness"))
+    o.pressure_load_stiffness =
+        readBool(b, *n, f.path("pressure_stiffness")).value_or(o.pressure_load_stiffness);
+  using Update = solve::DynamicOptions::LoadMatrixUpdate;
+  if (const YAML::Node* n = f.find("load_matrices"))
+    o.load_matrices =
+        in.choice<Update>(
+              *n, f.path("load_matrices"),
+              {{"step", Update::Step}, {"iteration", Update::Iteration}, {"off", Update::Off}})
+            .value_or(o.load_matrices);
   step.output_every = in.integerOr(f, "output_every", 1, step.output_every);
+}
+
+// release: [{node: REF, dofs: [x, z]}, ...]: supports let go when the step starts. Each dof must be
+// held by a support (or an earlier step's release must not have freed it already).
+void readRelease(CaseBuilder& b, Fields& f, StepSpec& step) {
+  const YAML::Node* list = f.find("release");
+  if (!list) return;
+  const std::vector<YAML::Node> items = listItems(b.diag, *list, f.path("release"));
+  for (size_t i = 0; i < items.size(); ++i) {
+    Fields r(b.diag, items[i], itemPath(f.path("release"), i), {"node", "nodes", "dofs"});
+    const auto nodes = nodeOrNodes(b, r);
+    const YAML::Node* dofs_node = r.require("dofs");
+    const auto dofs = dofs_node ? readFix(b, *dofs_node, r.path("dofs")) : std::nullopt;
+    if (!nodes || !dofs) continue;
+    for (int node : *nodes)
+      for (int k : *dofs) {
+        const std::pair<int, int> dof{node, k};
+        const bool held = b.model.isConstrained(node, k) && !b.released.count(dof);
+        if (!held) {
+          b.diag.error(items[i],
+                       r.path() + ": node " + std::to_string(b.c.node_ids[node]) + " " + "xyz"[k] +
+                           " is not held by a support at this step (got " +
+                           (b.released.count(dof) ? "released by an earlier step" : "a free dof") +
+                           ", expected a dof of supports:)");
+          continue;
+        }
+        b.released.insert(dof);
+        step.release.push_back(dof);
+      }
+  }
 }
 
 // `name:`, or the kind of step when there is none.
@@ -257,15 +297,17 @@ const std::vector<std::string>& keysOf(StepSpec::Kind kind) {
     return own;
   };
   static const std::vector<std::string> relax = {
-      "name",      "load_factor",        "tolerance", "damping",       "initial_damping_factor",
-      "decrement", "residual_tolerance", "max_steps", "max_iterations"};
+      "name",      "load_factor",        "tolerance", "damping",        "initial_damping_factor",
+      "decrement", "residual_tolerance", "max_steps", "max_iterations", "release"};
   static const std::vector<std::string> statics =
       with({"name", "load_factor", "increments", "control", "psi", "desired_iterations",
-            "max_increments", "pressure_stiffness"});
-  static const std::vector<std::string> modes = {"name", "count", "shift", "mass", "tolerance"};
+            "max_increments", "pressure_stiffness", "release"});
+  static const std::vector<std::string> modes = {"name", "count",     "shift",
+                                                 "mass", "tolerance", "release"};
   static const std::vector<std::string> dynamic =
       with({"name", "load_factor", "schedule", "dt", "steps", "gamma", "beta", "hht_alpha", "mass",
-            "rayleigh", "max_step_cuts", "output_every"});
+            "rayleigh", "max_step_cuts", "output_every", "pressure_stiffness", "load_matrices",
+            "release"});
   switch (kind) {
     case StepSpec::Kind::Relax:
       return relax;
@@ -324,6 +366,7 @@ void readStep(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
       readDynamic(b, f, step);
       break;
   }
+  readRelease(b, f, step);
   step.name = stepName(b, f, found->first.c_str());
   b.c.steps.push_back(std::move(step));
 }

@@ -41,9 +41,20 @@ model::NodalField reactions(const model::Model& m, const model::Assembler& a,
 class Runner {
  public:
   Runner(const Case& c, const std::string& netcdf_path, std::ostream& log)
-      : c_(c), log_(log), assembler_(*c.model), writer_(netcdf_path, *c.model, c) {
+      : c_(c),
+        log_(log),
+        assembler_(std::make_unique<model::Assembler>(*c.model)),
+        writer_(netcdf_path, *c.model, c) {
     slog_.message = [&log](const std::string& s) { log << "  " << s << std::endl; };
     slog_.node_name = [&c](int n) { return "node " + std::to_string(c.node_ids[n]); };
+  }
+
+  Runner(const Runner&) = delete;
+  Runner& operator=(const Runner&) = delete;
+  ~Runner() {
+    for (const Released& r : released_)
+      c_.model->constrain(r.node, r.component, r.held.value, r.held.history);
+    if (!released_.empty()) c_.model->numberEquations();
   }
 
   // Runs step i from `state`; returns its closing frame. Throws ConvergenceError with `state`
@@ -51,16 +62,17 @@ class Runner {
   ResultFrame run(int i, model::State& state) {
     const StepSpec& step = c_.steps[i];
     streamed_ = false;
+    release(step);
     switch (step.kind) {
       case StepSpec::Kind::Relax: {
-        const solve::RelaxationReport r = solve::relax(assembler_, state, step.relax, slog_);
+        const solve::RelaxationReport r = solve::relax(*assembler_, state, step.relax, slog_);
         log_ << "  relaxed in " << r.steps << " steps (" << r.iterations
              << " Newton iterations), change " << r.change_ratio << ", residual " << r.residual_norm
              << "\n";
         break;
       }
       case StepSpec::Kind::Static: {
-        const solve::StaticReport r = solve::solveStatic(assembler_, state, step.statics, slog_);
+        const solve::StaticReport r = solve::solveStatic(*assembler_, state, step.statics, slog_);
         int iterations = 0;
         for (const auto& inc : r.increments) iterations += inc.iterations;
         log_ << "  equilibrium at load factor " << state.load_factor << " in "
@@ -80,12 +92,23 @@ class Runner {
     f.step_index = i;
     f.step_name = std::move(name);
     f.state = &s;
-    f.elements = assembler_.elementResults(s);
-    f.reactions = reactions(*c_.model, assembler_, s);
+    f.elements = assembler_->elementResults(s);
+    f.reactions = reactions(*c_.model, *assembler_, s);
     return f;
   }
 
   void write(const ResultFrame& f) { writer_.write(f); }
+
+  // Lets go of the supports the step releases: the model's equations are numbered again and the
+  // assembler is built anew on them. The state keeps the released dofs' positions and velocities.
+  void release(const StepSpec& step) {
+    if (step.release.empty()) return;
+    for (const auto& [node, component] : step.release)
+      released_.push_back({node, component, c_.model->release(node, component)});
+    assembler_ = std::make_unique<model::Assembler>(*c_.model);
+    log_ << "  released " << step.release.size() << " dof" << (step.release.size() == 1 ? "" : "s")
+         << "; " << c_.model->equationCount() << " equations\n";
+  }
   // Makes every record written so far survive a kill (records are synced once a second).
   void flush() { writer_.flush(); }
   // True when the last step (a dynamic one) already wrote its closing state while streaming.
@@ -93,7 +116,7 @@ class Runner {
 
  private:
   ResultFrame modes(int i, const model::State& state) {
-    const solve::ModalResult r = solve::naturalModes(assembler_, state, c_.steps[i].modes, slog_);
+    const solve::ModalResult r = solve::naturalModes(*assembler_, state, c_.steps[i].modes, slog_);
     ResultFrame f = frame(i, c_.steps[i].name, state);
     f.frequencies = r.omega;
     f.mode_shapes = r.shapes;
@@ -125,7 +148,7 @@ class Runner {
       }
     };
     const solve::DynamicReport r =
-        solve::integrate(assembler_, state, step.dynamic, slog_, on_step);
+        solve::integrate(*assembler_, state, step.dynamic, slog_, on_step);
     log_ << "  " << r.steps << " time steps, " << r.iterations << " Newton iterations, "
          << r.tangent_updates << " tangent updates, " << r.cuts << " step cuts\n";
     streamed_ = true;
@@ -134,7 +157,12 @@ class Runner {
 
   const Case& c_;
   std::ostream& log_;
-  model::Assembler assembler_;
+  std::unique_ptr<model::Assembler> assembler_;  // built anew when a step releases supports
+  struct Released {
+    int node, component;
+    model::Model::Constraint held;
+  };
+  std::vector<Released> released_;  // put back when the run ends: the case can run again
   NetcdfWriter writer_;
   solve::SolveLog slog_;
   bool streamed_ = false;

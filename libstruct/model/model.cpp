@@ -57,11 +57,13 @@ void Model::addNodeLoad(std::shared_ptr<const NodeLoad> load) {
   node_loads_.push_back(std::move(load));
 }
 
-void Model::release(int node, int component) {
+Model::Constraint Model::release(int node, int component) {
+  Constraint held{prescribed_(component, node), motion_[3 * node + component]};
   constrained_(component, node) = false;
   prescribed_(component, node) = 0.0;
   motion_[3 * node + component] = nullptr;
   numberEquations();
+  return held;
 }
 
 void Model::numberEquations() {

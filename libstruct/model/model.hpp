@@ -45,9 +45,14 @@ class Model {
   // Loads that depend on the motion (load_point.hpp), scaled by the load factor like gravity.
   void addLineLoad(std::shared_ptr<const LineLoad> load) { line_loads_.push_back(std::move(load)); }
   void addNodeLoad(std::shared_ptr<const NodeLoad> load);
+  // A dof's constraint: its prescribed value and history.
+  struct Constraint {
+    double value = 0.0;
+    std::shared_ptr<const TimeFunction> history;
+  };
   // Frees a constrained dof (a held buoy let go) and numbers the equations again; an Assembler
-  // built before must be built again.
-  void release(int node, int component);
+  // built before must be built again. Returns what held it, for constrain() to put back.
+  Constraint release(int node, int component);
 
   int nodeCount() const { return static_cast<int>(reference_.cols()); }
   int elementCount() const { return static_cast<int>(elements_.size()); }

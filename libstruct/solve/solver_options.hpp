@@ -105,6 +105,8 @@ struct DynamicOptions {
   // never (their forces stay in the residual; only to measure what the matrices are worth).
   enum class LoadMatrixUpdate { Step, Iteration, Off };
   LoadMatrixUpdate load_matrices = LoadMatrixUpdate::Step;
+  // Follower pressure: its load stiffness dP/du in the tangent (non-symmetric, LU), as in statics.
+  bool pressure_load_stiffness = false;
 };
 
 }  // namespace flexmoor::solve

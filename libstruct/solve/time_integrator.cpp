@@ -32,7 +32,8 @@ TimeIntegrator::TimeIntegrator(const model::Assembler& assembler, const DynamicO
       alpha_(options.hht_alpha),
       motion_loads_(assembler.model().hasMotionLoads() &&
                     options.load_matrices != DynamicOptions::LoadMatrixUpdate::Off),
-      linear_(motion_loads_ ? MatrixKind::Unsymmetric : MatrixKind::Symmetric) {
+      linear_(motion_loads_ || options.pressure_load_stiffness ? MatrixKind::Unsymmetric
+                                                               : MatrixKind::Symmetric) {
   if (alpha_ != 0.0) {
     gamma_ = 0.5 - alpha_;
     beta_ = 0.25 * (1.0 - alpha_) * (1.0 - alpha_);
@@ -117,6 +118,7 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
     setFree(model_, acc, next.acceleration);
     const bool update = o_.flavour == NewtonFlavour::Full ? true : (it == 0 && refresh_each_step);
     Residual R = outOfBalance(assembler_, next, update ? &K_ : nullptr);
+    if (update && o_.pressure_load_stiffness) assembler_.subtractLoadStiffness(next, K_);
     VectorXd inertia_full;
     assembler_.inertiaForce(masses_, next, inertia_full);
     const VectorXd inertia = assembler_.restrictToFree(inertia_full);
