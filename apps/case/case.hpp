@@ -3,6 +3,7 @@
 // the summary quantities it declares. Everything is in the case's consistent unit system.
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,14 @@ struct SummarySpec {
   SourceLocation where;
 };
 
+// `figure:` the PNG a run draws of its time series (flexmoor plot): one panel a series, each in
+// the plot's VARIABLE@INDEX form with the model's 1-based node and element numbers.
+struct FigureSpec {
+  std::vector<std::string> series;
+  std::string title;  // empty: the case's title
+  SourceLocation where;
+};
+
 struct Case {
   std::string name;   // `name:` in the file, or the file's stem
   std::string title;  // optional one-line description
@@ -76,6 +85,7 @@ struct Case {
   std::unique_ptr<model::Model> model;  // equations already numbered
   std::vector<StepSpec> steps;
   std::vector<SummarySpec> summary;
+  std::optional<FigureSpec> figure;
   std::map<std::string, std::vector<int>> node_sets;  // named sets, 0-based nodes
   std::vector<int> node_ids;  // the file's id of each model node (explicit or generated)
   std::map<std::string, std::vector<int>> lines;         // nodes of each named line, start to end

@@ -129,6 +129,7 @@ void readSupports(CaseBuilder& b, const YAML::Node& n);
 void readLoads(CaseBuilder& b, const YAML::Node& n);
 void readSteps(CaseBuilder& b, const YAML::Node& n);
 void readSummary(CaseBuilder& b, const YAML::Node& n);
+void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp
 // The checks of the built model and its steps that no section's reader can make alone
 // (model_checks.cpp): degenerate elements, free nodes and rigid-body mechanisms, coincident
 // nodes, steps that need a mass or more dofs than there are. Errors go to the Diagnostics;

@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 const std::vector<std::string> kTopKeys = {
     "name",     "title",     "units",    "materials", "sections", "nodes", "lines",  "surfaces",
-    "elements", "node_sets", "supports", "histories", "loads",    "steps", "summary"};
+    "elements", "node_sets", "supports", "histories", "loads",    "steps", "summary", "figure"};
 
 // The case's name: used for output files, so a plain word.
 std::string readName(Diagnostics& diag, Input& in, const Fields& top, const std::string& path) {
@@ -85,6 +85,7 @@ Case readCase(const std::string& path) {
   readLoads(b, section("loads"));
   if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
   readSummary(b, section("summary"));
+  readFigure(b, section("figure"));
 
   c.model->numberEquations();
   if (diag.empty()) {

@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
 
   std::string case_name;
   RunOptions options;  // output_dir is set only by -o (runCase chooses the default)
-  bool no_vtk = false;
+  bool no_vtk = false, no_figure = false;
   CLI::App* run_command = app.add_subcommand("run", cli::kRunSummary);
   run_command->footer(cli::kRunDetails);
   run_command->add_option("CASE", case_name, "a case file, or the name of a case under cases/")
@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
   run_command->add_option("-o,--output", options.output_dir, "write the results into DIR")
       ->type_name("DIR");
   run_command->add_flag("--no-vtk", no_vtk, "do not write the .vtk files");
+  run_command->add_flag("--no-figure", no_figure, "do not draw the case's figure (DIR/<case>.png)");
 
   CLI::App* check_command = app.add_subcommand("check", cli::kCheckSummary);
   check_command->footer(cli::kCheckDetails);
@@ -136,6 +137,7 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? kSuccess : kUsage;  // help and version exit 0
   }
   options.vtk = !no_vtk;
+  options.figure = !no_figure;
   if (check_command->parsed()) return check(case_name);
   if (cases_command->parsed()) return listNamedCases();
   if (plot_command->parsed()) return plot(result, png, series, title);

@@ -68,6 +68,10 @@ std::string CaseOutputs::summary() const {
   return (fs::path(directory_) / (case_name_ + ".summary.json")).string();
 }
 
+std::string CaseOutputs::figure() const {
+  return (fs::path(directory_) / (case_name_ + ".png")).string();
+}
+
 std::string CaseOutputs::lock() const {
   return (fs::path(directory_) / ("." + case_name_ + ".lock")).string();
 }

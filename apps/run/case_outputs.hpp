@@ -4,6 +4,7 @@
 //   DIR/<case>.nc.partial      the results while they are streamed; what a killed run leaves
 //   DIR/<case>-<n>.vtk         the state after step n
 //   DIR/<case>.summary.json    the case's summary quantities
+//   DIR/<case>.png             the case's figure, when it has one
 //   DIR/.<case>.lock           held while a run of the case writes into DIR
 // Every name starts with the case's, so cases share a directory without touching each other's.
 #include <set>
@@ -23,6 +24,7 @@ class CaseOutputs {
   std::string partialNetcdf() const;
   std::string vtk(int step) const;  // step 1-based
   std::string summary() const;
+  std::string figure() const;
   std::string lock() const;
 
   // Removes what an earlier run of the case left and this run did not write: DIR/<case>-<n>.vtk

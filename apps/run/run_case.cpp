@@ -13,6 +13,7 @@
 #include "apps/output/summary_quantities.hpp"
 #include "apps/output/vtk_writer.hpp"
 #include "apps/run/case_outputs.hpp"
+#include "apps/run/draw_figure.hpp"
 #include "libstruct/solve/modal.hpp"
 #include "libstruct/solve/newmark.hpp"
 #include "libstruct/solve/static_solver.hpp"
@@ -279,7 +280,17 @@ RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
   for (size_t k = 0; k < out.summary.size(); ++k)
     log << "  " << std::left << std::setw(24) << out.summary[k].first << std::setprecision(8)
         << out.summary[k].second << " " << units[k].second << "\n";
+  // Drawn last, from the file in place; a figure of an earlier run that this one does not draw
+  // is removed.
+  std::error_code ec;
+  if (c.figure && options.figure &&
+      drawFigure(*c.figure, c.title.empty() ? c.name : c.title, out.netcdf_path, files.figure(),
+                 diag))
+    out.figure_path = files.figure();
+  else
+    fs::remove(files.figure(), ec);
   log << "results: " << out.netcdf_path << "\n         " << out.summary_path << "\n";
+  if (!out.figure_path.empty()) log << "figure:  " << out.figure_path << "\n";
   return out;
 }
 

@@ -19,6 +19,7 @@ namespace flexmoor::app {
 struct RunOptions {
   std::string output_dir;  // empty: results/<case>
   bool vtk = true;         // write DIR/<case>-<step>.vtk for ParaView
+  bool figure = true;      // draw DIR/<case>.png when the case has a figure:
 };
 
 enum ExitCode { kSuccess = 0, kUsage = 1, kBadInput = 2, kNotConverged = 3, kRunFailed = 4 };
@@ -27,6 +28,7 @@ struct RunOutcome {
   ExitCode exit_code = kSuccess;
   std::string netcdf_path;
   std::string summary_path;
+  std::string figure_path;  // empty when no figure was drawn
   std::vector<std::pair<std::string, double>> summary;
 };
 

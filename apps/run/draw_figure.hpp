@@ -1,0 +1,17 @@
+#pragma once
+// The figure of a run (a case's figure:): drawn by apps/plot/flexmoor_plot.py under Debian's
+// interpreter from the netCDF the run left, into a temporary file renamed into place, so a
+// figure is whole or absent.
+#include <ostream>
+#include <string>
+
+#include "apps/case/case.hpp"
+
+namespace flexmoor::app {
+
+// Draws `figure` of `netcdf` into `png`. Returns false, saying why on `diag`, when it could not
+// (no /usr/bin/python3 or matplotlib, the plot failed); the run's results stand either way.
+bool drawFigure(const FigureSpec& figure, const std::string& case_title, const std::string& netcdf,
+                const std::string& png, std::ostream& diag);
+
+}  // namespace flexmoor::app
