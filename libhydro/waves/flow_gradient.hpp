@@ -4,7 +4,9 @@
 // surface point below a point that is above the local elevation (what a body whose centre is out
 // of the water feels); its gradient is by central differences of that, with the step
 // flowGradientStep(sea). The kink of that clamp at the surface is not smoothed: within one step
-// of the surface the difference straddles it.
+// of the surface the difference straddles it. Nor is a current's shear that is singular (a power
+// law at the bed, where dU/dz is infinite) or kinked (a table's samples): near such a level the
+// difference is an average over two steps.
 #include <Eigen/Core>
 
 #include "libhydro/waves/sea.hpp"

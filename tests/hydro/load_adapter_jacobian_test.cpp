@@ -2,7 +2,7 @@
 // analytic Jacobians against central differences of their own evaluate (model::
 // numericalJacobians, step 1e-6 of each vector's scale), at points in an Airy wave at finite
 // depth with a heading, in a sheared current, just below the crest (Wheeler-stretched, above the
-// mean level), a sphere piercing the surface, and a line in contact with a sloped bed.
+// mean level; the sea of ocean_models.hpp), a sphere piercing the surface, and a line in contact with a sloped bed.
 //
 // Reference: the central differences. The adapters' derivative in position goes through the
 // flow's gradient, itself by central differences of Sea::at at 1e-4 / k (truncation ~1e-9 of the
@@ -20,6 +20,7 @@
 #include "libhydro/loads/body_node_load.hpp"
 #include "libhydro/loads/morison_line_load.hpp"
 #include "libhydro/seabed/seabed_line_load.hpp"
+#include "tests/support/ocean_models.hpp"
 
 namespace flexmoor::hydro {
 namespace {
@@ -29,15 +30,9 @@ using Eigen::Vector3d;
 
 constexpr double kG = 9.80665, kRho = 1025.0, kDepth = 50.0, kTolerance = 1e-8;
 
-// A 1.5 m, 8 s wave heading 30 degrees at 50 m depth and a 1/7 power-law current of 0.8 m/s at
-// the surface heading 100 degrees (sheared: a derivative in z).
-std::shared_ptr<Sea> waveAndCurrent() {
-  auto sea = std::make_shared<Sea>(Water{kRho, kDepth, kG});
-  sea->addComponent(WaveComponent::fromHeightAndPeriod(1.5, 8.0, 0.5236, 0.4, kDepth, kG));
-  sea->setCurrent(CurrentProfile::powerLaw(0.8, 7.0, kDepth, 1.745));
-  return sea;
-}
+std::shared_ptr<Sea> waveAndCurrent() { return test::waveAndCurrentSea(kDepth); }
 
+// A 1/7 power-law current alone, 1.1 m/s at the surface (sheared: a derivative in z).
 std::shared_ptr<Sea> currentOnly() {
   auto sea = std::make_shared<Sea>(Water{kRho, kDepth, kG});
   sea->setCurrent(CurrentProfile::powerLaw(1.1, 7.0, kDepth, -0.3));
