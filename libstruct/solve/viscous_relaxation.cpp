@@ -12,7 +12,8 @@ namespace flexmoor::solve {
 namespace {
 
 // Newton on one implicit pseudo-time step of unit length (Eq. C.8-C.10):
-// [K_T + K_L + C I] du = P - F(u) - C (u - u_prev), K_L the motion-dependent loads' stiffness. Returns false if it does not converge.
+// [K_T + K_L + C I] du = P - F(u) - C (u - u_prev), K_L the motion-dependent loads' stiffness.
+// Returns false if it does not converge.
 // `trace` records the iterations; `stiffness` is set to the mean |K_ii| of the tangent.
 bool relaxationStep(const model::Assembler& assembler, model::State& state,
                     const model::NodalField& previous, double C, const RelaxationOptions& o,

@@ -1,8 +1,9 @@
 // The load-point adapters of libhydro (MorisonLineLoad, BodyNodeLoad, SeabedLineLoad): their
 // analytic Jacobians against central differences of their own evaluate (model::
 // numericalJacobians, step 1e-6 of each vector's scale), at points in an Airy wave at finite
-// depth with a heading, in a sheared current, just below the crest (Wheeler-stretched, above the
-// mean level; the sea of ocean_models.hpp), a sphere piercing the surface, and a line in contact with a sloped bed.
+// depth with a heading (the sea of ocean_models.hpp), in a sheared current, just below the crest
+// (Wheeler-stretched, above the mean level), a sphere piercing the surface, and a line in
+// contact with a sloped bed.
 //
 // Reference: the central differences. The adapters' derivative in position goes through the
 // flow's gradient, itself by central differences of Sea::at at 1e-4 / k (truncation ~1e-9 of the
