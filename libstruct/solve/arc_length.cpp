@@ -19,7 +19,8 @@ class ArcLengthPath {
   ArcLengthPath(const model::Assembler& a, const StaticOptions& o)
       : a_(a),
         o_(o),
-        linear_(o.pressure_load_stiffness ? MatrixKind::Unsymmetric : MatrixKind::Symmetric) {}
+        linear_(o.pressure_load_stiffness || a.model().hasMotionLoads() ? MatrixKind::Unsymmetric
+                                                                        : MatrixKind::Symmetric) {}
 
   // One increment of arc length ds from the converged `state`; false if it fails (state is then
   // undefined and must be restored by the caller).
@@ -91,6 +92,7 @@ class ArcLengthPath {
     a_.externalLoad(unit, full);
     P = a_.restrictToFree(full);
     if (o_.pressure_load_stiffness) a_.subtractLoadStiffness(state, K);
+    addMotionLoadStiffness(a_, state, K);
     if (!linear_.factorize(K)) return false;
     dut = linear_.solve(P);
     return dut.allFinite();

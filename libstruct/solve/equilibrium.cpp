@@ -24,6 +24,14 @@ Residual outOfBalance(const model::Assembler& assembler, const model::State& sta
   return r;
 }
 
+void addMotionLoadStiffness(const model::Assembler& assembler, const model::State& state,
+                            model::SparseMatrix& K) {
+  if (!assembler.model().hasMotionLoads()) return;
+  model::LoadMatrices J;
+  assembler.loadMatrices(state, J);
+  K.coeffs() += J.stiffness.coeffs();
+}
+
 bool converged(const Convergence& c, double displacement_norm, double residual_norm,
                double residual_floor) {
   const bool displacement_ok = !c.use_displacement || displacement_norm < c.displacement_tolerance;

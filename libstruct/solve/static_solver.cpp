@@ -67,8 +67,9 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
   if (options.control == LoadControl::ArcLength)
     return solveArcLength(assembler, state, options, log);
   StaticReport report;
-  LinearSolver linear(options.pressure_load_stiffness ? MatrixKind::Unsymmetric
-                                                      : MatrixKind::Symmetric);
+  LinearSolver linear(options.pressure_load_stiffness || assembler.model().hasMotionLoads()
+                          ? MatrixKind::Unsymmetric
+                          : MatrixKind::Symmetric);
   model::SparseMatrix K;
   BfgsUpdates bfgs;
   double floor = 0.0;  // round-off floor of the residual at the last tangent
@@ -103,6 +104,7 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
       if (update) {
         ++updates;
         if (options.pressure_load_stiffness) assembler.subtractLoadStiffness(state, K);
+        addMotionLoadStiffness(assembler, state, K);
         if (!factorizeRegularised(linear, K, log, regularised)) {
           state = converged_state;
           throw ConvergenceError(

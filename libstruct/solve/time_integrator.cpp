@@ -144,7 +144,10 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
     if (!std::isfinite(rec.residual_norm) || it == o_.max_iterations) return false;
     const bool update_loads = loadMatricesWanted(it);
     if (update_loads) {
-      assembler_.loadMatrices(next, loads_);
+      // At the first iteration from the step's start (the last accepted state), not from the
+      // predictor, whose u' = -u'_n and u'' = -4 u'_n / dt - u''_n (Eq. 4.57-4.58 at u = u_n)
+      // are far from the motion: the drag's and added mass's tangent terms depend on them.
+      assembler_.loadMatrices(it == 0 ? s : next, loads_);
       ++report_.load_matrix_updates;
     }
     if (update || update_loads) {

@@ -12,7 +12,8 @@ namespace flexmoor::solve {
 namespace {
 
 // Newton on one implicit pseudo-time step of unit length (Eq. C.8-C.10):
-// [K_T + C I] du = P - F(u) - C (u - u_prev). Returns false if it does not converge.
+// [K_T + K_L + C I] du = P - F(u) - C (u - u_prev), K_L the motion-dependent loads' stiffness.
+// Returns false if it does not converge.
 // `trace` records the iterations; `stiffness` is set to the mean |K_ii| of the tangent.
 bool relaxationStep(const model::Assembler& assembler, model::State& state,
                     const model::NodalField& previous, double C, const RelaxationOptions& o,
@@ -25,6 +26,7 @@ bool relaxationStep(const model::Assembler& assembler, model::State& state,
     if (K.rows() > 0) stiffness = K.diagonal().cwiseAbs().mean();
     const Eigen::VectorXd velocity =
         assembler.restrictToFree(asVector(state.displacement) - asVector(previous));
+    addMotionLoadStiffness(assembler, state, K);
     R.free -= C * velocity;     // D u' with D = C I (Eq. C.11)
     K.diagonal().array() += C;  // Eq. C.10
     if (!linear.factorize(K)) return false;
@@ -89,7 +91,8 @@ std::string notSettled(const RelaxationOptions& o, const RelaxationReport& r,
 RelaxationReport relax(const model::Assembler& assembler, model::State& state,
                        const RelaxationOptions& o, const SolveLog& log) {
   RelaxationReport report;
-  LinearSolver linear;
+  LinearSolver linear(assembler.model().hasMotionLoads() ? MatrixKind::Unsymmetric
+                                                         : MatrixKind::Symmetric);
   NewtonTrace trace;
   double stiffness = 0.0;
   LargestMove move;  // the largest change of the last step
