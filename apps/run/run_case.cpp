@@ -25,19 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 const double kPi = std::acos(-1.0);
 
-// Support reactions: F - P at the constrained dofs, zero elsewhere (inertia not included).
-model::NodalField reactions(const model::Model& m, const model::Assembler& a,
-                            const model::State& s) {
-  Eigen::VectorXd F, P;
-  a.internalForce(s, F, nullptr);
-  a.externalLoad(s, P);
-  model::NodalField r = model::NodalField::Zero(3, m.nodeCount());
-  for (int n = 0; n < m.nodeCount(); ++n)
-    for (int k = 0; k < 3; ++k)
-      if (m.isConstrained(n, k)) r(k, n) = F(3 * n + k) - P(3 * n + k);
-  return r;
-}
-
 // Everything one run shares: the model, its assembler, the netCDF writer and the log.
 class Runner {
  public:
@@ -94,7 +81,7 @@ class Runner {
     f.step_name = std::move(name);
     f.state = &s;
     f.elements = assembler_->elementResults(s);
-    f.reactions = reactions(*c_.model, *assembler_, s);
+    f.reactions = assembler_->reactions(s);
     return f;
   }
 

@@ -79,14 +79,29 @@ void Assembler::internalForce(const State& state, Eigen::VectorXd& force, Sparse
     *K = pattern_;
     K->coeffs().setZero();
   }
-  Eigen::VectorXd f;
+  ForceMemo& memo = internal_memo_;
+  memo.elements.resize(model_.elementCount());
   Eigen::MatrixXd k;
   for (int e = 0; e < model_.elementCount(); ++e) {
+    Eigen::VectorXd& f = memo.elements[e];
     model_.element(e).internalForce(context(state, e), f, K ? &k : nullptr);
     const auto& index = full_index_[e];
     for (size_t a = 0; a < index.size(); ++a) force(index[a]) += f(a);
     if (K) scatterMatrix(slot_[e], k, *K);
   }
+  memo.valid = true;
+  memo.displacement = state.displacement;
+  memo.assembled = force;
+}
+
+bool Assembler::sameDisplacement(const ForceMemo& m, const State& s) {
+  return m.valid && m.displacement.cols() == s.displacement.cols() &&
+         m.displacement == s.displacement;
+}
+
+bool Assembler::sameState(const ForceMemo& m, const State& s) {
+  return sameDisplacement(m, s) && m.time == s.time && m.load_factor == s.load_factor &&
+         m.velocity == s.velocity && m.acceleration == s.acceleration;
 }
 
 void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load) const {
@@ -107,13 +122,18 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
   load.setZero(3 * model_.nodeCount());
   for (const NodalLoad& p : model_.nodalLoads())
     if (!p.history) load.segment<3>(3 * p.node) += state.load_factor * p.force;
-  Eigen::VectorXd p;
-  if (!model_.gravity().isZero() || !model_.lineLoads().empty())
+  ForceMemo& memo = external_memo_;
+  memo.per_element = !model_.gravity().isZero() || !model_.lineLoads().empty();
+  if (memo.per_element) {
+    memo.elements.resize(model_.elementCount());
     for (int e = 0; e < model_.elementCount(); ++e) {
+      Eigen::VectorXd& p = memo.elements[e];
       elementLoad(state, e, p);
       const auto& index = full_index_[e];
       for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
     }
+  }
+  Eigen::VectorXd p;
   for (const NodalLoad& p : model_.nodalLoads())
     if (p.history) load.segment<3>(3 * p.node) += p.history->value(state.time) * p.force;
   for (const auto& node_load : model_.nodeLoads())
@@ -127,6 +147,13 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
       for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
     }
   }
+  memo.valid = true;
+  memo.displacement = state.displacement;
+  memo.velocity = state.velocity;
+  memo.acceleration = state.acceleration;
+  memo.time = state.time;
+  memo.load_factor = state.load_factor;
+  memo.assembled = load;
 }
 
 LoadPoint Assembler::nodePoint(const State& state, int node) const {
@@ -256,10 +283,17 @@ void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scrat
                                element::ElementResult& r) const {
   const element::Element& element = model_.element(e);
   Eigen::VectorXd& f = scratch.force;
-  Eigen::VectorXd& p = scratch.load;
-  element.internalForce(context(state, e), f, nullptr);
-  elementLoad(state, e, p);
-  f -= p;
+  if (sameDisplacement(internal_memo_, state))
+    f = internal_memo_.elements[e];
+  else
+    element.internalForce(context(state, e), f, nullptr);
+  if (sameState(external_memo_, state)) {
+    if (external_memo_.per_element) f -= external_memo_.elements[e];
+  } else {
+    Eigen::VectorXd& p = scratch.load;
+    elementLoad(state, e, p);
+    f -= p;
+  }
   const auto& index = full_index_[e];
   Eigen::VectorXd& a = scratch.acceleration;
   a.resize(index.size());
@@ -281,6 +315,20 @@ void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scrat
     const double magnitude = force.norm();
     r.end_tension[end] = force.dot(position(next) - position(local)) > 0.0 ? -magnitude : magnitude;
   }
+}
+
+NodalField Assembler::reactions(const State& state) const {
+  Eigen::VectorXd F, P;
+  const Eigen::VectorXd& internal = sameDisplacement(internal_memo_, state)
+                                        ? internal_memo_.assembled
+                                        : (internalForce(state, F, nullptr), F);
+  const Eigen::VectorXd& external =
+      sameState(external_memo_, state) ? external_memo_.assembled : (externalLoad(state, P), P);
+  NodalField r = NodalField::Zero(3, model_.nodeCount());
+  for (int n = 0; n < model_.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k)
+      if (model_.isConstrained(n, k)) r(k, n) = internal(3 * n + k) - external(3 * n + k);
+  return r;
 }
 
 std::vector<element::ElementResult> Assembler::elementResults(const State& state) const {

@@ -55,6 +55,8 @@ class Assembler {
   // nodes from its nodal force balance (see setEndTensions); its point tensions stay the
   // element's own, from the strain.
   std::vector<element::ElementResult> elementResults(const State& state) const;
+  // Support reactions F - P at the constrained dofs (inertia not included), zero elsewhere.
+  NodalField reactions(const State& state) const;
 
  private:
   element::ElementContext context(const State& state, int e) const {
@@ -73,6 +75,22 @@ class Assembler {
   void setEndTensions(const State& state, int e, EndForceScratch& scratch,
                       element::ElementResult& r) const;
 
+  // The last internal force and external load computed, assembled and per element, with the
+  // state they belong to. A record of an accepted time step asks for the forces of the very
+  // state the last Newton iteration evaluated: elementResults and reactions take them from here
+  // instead of computing them again. A memo matches a state when the fields its forces depend on
+  // are equal, exactly.
+  struct ForceMemo {
+    bool valid = false;
+    NodalField displacement, velocity, acceleration;
+    double time = 0.0, load_factor = 0.0;
+    Eigen::VectorXd assembled;
+    std::vector<Eigen::VectorXd> elements;
+    bool per_element = true;  // external: false when no element has a load of its own
+  };
+  static bool sameDisplacement(const ForceMemo& m, const State& s);
+  static bool sameState(const ForceMemo& m, const State& s);
+
   const Model& model_;
   SparseMatrix pattern_;
   std::vector<std::vector<int>> full_index_;  // per element: full index of each local dof
@@ -81,6 +99,7 @@ class Assembler {
   // Consistent element masses for the end-force balance, computed on first use (total
   // Lagrangian: they depend on the reference configuration only).
   mutable std::vector<Eigen::MatrixXd> consistent_masses_;
+  mutable ForceMemo internal_memo_, external_memo_;
 };
 
 }  // namespace flexmoor::model
