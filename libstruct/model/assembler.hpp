@@ -55,6 +55,9 @@ class Assembler {
   // nodes from its nodal force balance (see setEndTensions); its point tensions stay the
   // element's own, from the strain.
   std::vector<element::ElementResult> elementResults(const State& state) const;
+  // Element e's result alone (0-based), as elementResults gives it: what a quantity of one
+  // element needs in every time step.
+  element::ElementResult elementResult(const State& state, int e) const;
 
  private:
   element::ElementContext context(const State& state, int e) const {
@@ -72,6 +75,7 @@ class Assembler {
   };
   void setEndTensions(const State& state, int e, EndForceScratch& scratch,
                       element::ElementResult& r) const;
+  element::ElementResult elementResult(const State& state, int e, EndForceScratch& scratch) const;
 
   const Model& model_;
   SparseMatrix pattern_;
