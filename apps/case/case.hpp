@@ -1,6 +1,7 @@
 #pragma once
 // A case as read from its YAML file: the model it builds, the analysis steps to run in order, and
 // the summary quantities it declares. Everything is in the case's consistent unit system.
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -40,6 +41,14 @@ struct StepSpec {
   // free in the steps after.
   std::vector<std::pair<int, int>> release;
   SourceLocation where;
+
+  // A dynamic step's time: the sum of its schedule's dt x steps; 0 for the other kinds.
+  double duration() const {
+    double t = 0.0;
+    if (kind == Kind::Dynamic)
+      for (const solve::TimeSegment& segment : dynamic.schedule) t += segment.dt * segment.steps;
+    return t;
+  }
 };
 
 // A scalar the case promises in summary.json.
@@ -47,6 +56,8 @@ struct SummarySpec {
   enum class Quantity {
     Displacement,       // component of a node's displacement
     Position,           // component of a node's current position
+    Velocity,           // component of a node's velocity u'
+    Speed,              // |u'| at a node
     Reaction,           // component of a support reaction
     ReactionMagnitude,  // |reaction| at a node
     EndTension,         // force on one end point of an element (its nodal force balance)
@@ -56,6 +67,10 @@ struct SummarySpec {
                         // integration points (force per current length)
     ResultantMin,       // smaller principal resultant, likewise
   };
+  // How the quantity is taken over its step: from the state that closes it, or, in a dynamic
+  // step, from the series of its accepted time steps (summary_series.hpp): at a time, or a
+  // statistic over the window [from, to].
+  enum class Reduction { StepEnd, AtTime, Max, Min, Mean, Std };
   std::string name;
   Quantity quantity = Quantity::Displacement;
   int node = -1;       // 0-based model node
@@ -65,7 +80,11 @@ struct SummarySpec {
   int mode = 0;        // Frequency: 1-based mode number
   double scale = 1.0;  // e.g. -1 to report a sag as positive
   int step = -1;       // 0-based step index; -1 = the last step
-  std::string unit;    // unit name in the case's system ("ft", "lbf")
+  Reduction reduction = Reduction::StepEnd;
+  double at = 0.0;  // AtTime: the time, in the run's time (every dynamic step advances it)
+  double from = -std::numeric_limits<double>::infinity();  // the window of a statistic; the
+  double to = std::numeric_limits<double>::infinity();     // default is the whole step
+  std::string unit;  // unit name in the case's system ("ft", "lbf")
   SourceLocation where;
 };
 

@@ -33,9 +33,12 @@
 //                         [criterion: displacement | residual | both], [max_iterations]}
 //              defaults: solve::RelaxationOptions, solve::StaticOptions
 //   summary:   NAME: {quantity, [node: REF], [element: ID, end: first | last], [scale: 1],
-//                     [step: NAME or 1-based index; default: the last step]}
-//              quantity: displacement_{x,y,z} | position_{x,y,z} | reaction_{x,y,z} |
-//                        reaction_magnitude | end_tension | max_tension
+//                     [step: NAME or 1-based index; default: the last step],
+//                     [at: TIME | stat: max | min | mean | std, [window: {[from], [to]}]]}
+//              quantity: displacement_{x,y,z} | position_{x,y,z} | velocity_{x,y,z} | speed |
+//                        reaction_{x,y,z} | reaction_magnitude | end_tension | max_tension |
+//                        resultant_max | resultant_min | frequency
+//              at / stat: of a dynamic step's accepted time steps (summary_series.hpp)
 //
 // REF, one node: an id, LINE.start, LINE.end, or LINE.middle (a line with an odd node count).
 // NODES: `all`, a node set, a line's name (its nodes), a REF, or a list of these.

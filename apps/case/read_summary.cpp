@@ -15,7 +15,7 @@ enum class Target { Node, ElementEnd, Membrane, Mode, Model };
 
 // The unit a quantity is reported in. A support reaction of an axisymmetric model is per radian
 // of circumference, like every force of its meridian (a hoop cable's tension is a whole force).
-enum class Measure { Length, Force, Reaction, ForcePerLength, AngularFrequency };
+enum class Measure { Length, Velocity, Force, Reaction, ForcePerLength, AngularFrequency };
 
 struct QuantityInfo {
   Quantity quantity;
@@ -36,6 +36,8 @@ std::string unitOf(Measure m, UnitSystem system, bool per_radian) {
   switch (m) {
     case Measure::Length:
       return units.length;
+    case Measure::Velocity:
+      return units.length + "/" + units.time;
     case Measure::Force:
       return units.force;
     case Measure::Reaction:
@@ -56,6 +58,10 @@ const std::vector<std::pair<std::string, QuantityInfo>>& quantities() {
       {"position_x", {Quantity::Position, 0, Measure::Length, Target::Node}},
       {"position_y", {Quantity::Position, 1, Measure::Length, Target::Node}},
       {"position_z", {Quantity::Position, 2, Measure::Length, Target::Node}},
+      {"velocity_x", {Quantity::Velocity, 0, Measure::Velocity, Target::Node}},
+      {"velocity_y", {Quantity::Velocity, 1, Measure::Velocity, Target::Node}},
+      {"velocity_z", {Quantity::Velocity, 2, Measure::Velocity, Target::Node}},
+      {"speed", {Quantity::Speed, 0, Measure::Velocity, Target::Node}},
       {"reaction_x", {Quantity::Reaction, 0, Measure::Reaction, Target::Node}},
       {"reaction_y", {Quantity::Reaction, 1, Measure::Reaction, Target::Node}},
       {"reaction_z", {Quantity::Reaction, 2, Measure::Reaction, Target::Node}},
@@ -169,9 +175,101 @@ bool rejectUnused(CaseBuilder& b, Fields& f, const std::string& quantity, Target
   return ok;
 }
 
+// The time span of step `index` in the run's time: every dynamic step before it advances the
+// time by its duration, the other kinds keep it.
+struct StepSpan {
+  double start = 0.0, end = 0.0;
+  std::string unit;      // " s"
+  std::string expected;  // "expected 0 to 0.4 s, the time span of step 'shake'"
+};
+
+StepSpan stepSpan(const CaseBuilder& b, int index) {
+  StepSpan span;
+  for (int j = 0; j < index; ++j) span.start += b.c.steps[j].duration();
+  span.end = span.start + b.c.steps[index].duration();
+  span.unit = " " + unitNames(b.in.units).time;
+  span.expected = "expected " + formatNumber(span.start) + " to " + formatNumber(span.end) +
+                  span.unit + ", the time span of step '" + b.c.steps[index].name + "'";
+  return span;
+}
+
+// A time inside the span, within the round-off of the run's time (a sum of time steps).
+std::optional<double> timeInStep(CaseBuilder& b, const YAML::Node& n, const std::string& path,
+                                 const StepSpan& span) {
+  const auto t = b.in.quantity(n, path, kind::kTime);
+  if (!t) return std::nullopt;
+  const double slack = 1e-9 * std::max(1.0, span.end);
+  if (*t >= span.start - slack && *t <= span.end + slack) return t;
+  b.diag.error(n, path + ": outside the step (got " + formatNumber(*t) + span.unit + ", " +
+                      span.expected + ")");
+  return std::nullopt;
+}
+
+// `window: {from, to}` of a statistic, each bound optional (default the step's start and end),
+// inside the step, from before to.
+bool readWindow(CaseBuilder& b, const YAML::Node& n, const std::string& path, const StepSpan& span,
+                SummarySpec& s) {
+  Fields w(b.diag, n, path, {"from", "to"});
+  const YAML::Node* from = w.find("from");
+  const YAML::Node* to = w.find("to");
+  const auto t0 = from ? timeInStep(b, *from, w.path("from"), span) : span.start;
+  const auto t1 = to ? timeInStep(b, *to, w.path("to"), span) : span.end;
+  if (!t0 || !t1) return false;
+  if (*t1 <= *t0) {
+    b.diag.error(n, path + ": empty (got from " + formatNumber(*t0) + span.unit + " to " +
+                        formatNumber(*t1) + span.unit + ", expected from before to)");
+    return false;
+  }
+  if (from) s.from = *t0;  // else from the step's first state on
+  if (to) s.to = *t1;      // else to its last
+  return true;
+}
+
+// `at: TIME`, or `stat: max | min | mean | std` with an optional `window:`, of a quantity of
+// dynamic step `index`: taken from the series of its accepted time steps (summary_series.hpp).
+bool readReduction(CaseBuilder& b, Fields& f, int index, SummarySpec& s) {
+  const YAML::Node* at = f.find("at");
+  const YAML::Node* stat = f.find("stat");
+  const YAML::Node* window = f.find("window");
+  if (window && !stat) {
+    b.diag.error(*window, f.path("window") + ": not used without stat (expected stat: max, min, " +
+                              "mean or std with it)");
+    return false;
+  }
+  if (!at && !stat) return true;
+  if (at && stat) {
+    b.diag.error(*stat, f.path("stat") + ": given with at (expected either at: TIME or stat:)");
+    return false;
+  }
+  const std::string path = f.path(at ? "at" : "stat");
+  if (index < 0) return false;  // no steps: reported by readSteps
+  const StepSpec& step = b.c.steps[index];
+  if (step.kind != StepSpec::Kind::Dynamic) {
+    b.diag.error(at ? *at : *stat, path +
+                                       ": a value over time of a step that is not dynamic (got "
+                                       "step '" +
+                                       step.name + "', expected step: naming a dynamic step)");
+    return false;
+  }
+  const StepSpan span = stepSpan(b, index);
+  if (at) {
+    const auto t = timeInStep(b, *at, path, span);
+    if (!t) return false;
+    s.reduction = SummarySpec::Reduction::AtTime;
+    s.at = *t;
+    return true;
+  }
+  using R = SummarySpec::Reduction;
+  const auto reduction = b.in.choice<R>(
+      *stat, path, {{"max", R::Max}, {"min", R::Min}, {"mean", R::Mean}, {"std", R::Std}});
+  if (!reduction) return false;
+  s.reduction = *reduction;
+  return !window || readWindow(b, *window, f.path("window"), span, s);
+}
+
 std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   Fields f(b.diag, e.value, childPath("summary", e.key),
-           {"quantity", "node", "element", "end", "mode", "scale", "step"});
+           {"quantity", "node", "element", "end", "mode", "scale", "step", "at", "stat", "window"});
   SummarySpec s;
   s.name = e.key;
   s.where = {b.diag.file(), lineOf(e.key_node)};
@@ -235,6 +333,8 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   }
   if (!step) return std::nullopt;
   s.step = *step;
+  const int index = *step < 0 ? static_cast<int>(b.c.steps.size()) - 1 : *step;
+  if (!readReduction(b, f, index, s)) return std::nullopt;
   return s;
 }
 

@@ -28,54 +28,80 @@ void requireNodeComponent(const SummarySpec& spec, const model::Model& model) {
 // and cubic cables get badly wrong when EA / T is large (within each element the axial force
 // oscillates about the true one, by up to three times it for Example 1's cable on 16 x L3), while
 // the end forces stay right to round-off; the tension of a catenary is largest at an end anyway.
-double maxTension(const SummarySpec& spec, const ResultFrame& frame) {
-  if (frame.elements.empty())
+double maxTension(const SummarySpec& spec, const model::Model& model, const SummarySource& source) {
+  if (model.elementCount() == 0)
     throw std::out_of_range("summary \"" + spec.name + "\": the model has no elements");
   double t = -std::numeric_limits<double>::infinity();
-  for (const element::ElementResult& r : frame.elements)
+  for (const element::ElementResult& r : source.elements())
     t = std::max({t, r.end_tension[0], r.end_tension[1]});
   return t;
 }
 
-std::pair<double, double> principalResultants(const SummarySpec& spec, const ResultFrame& frame) {
-  requireIndex(spec.element, static_cast<int>(frame.elements.size()), spec, "element");
-  const auto resultants = app::principalResultants(frame.elements[spec.element]);
+const element::ElementResult& elementResult(const SummarySpec& spec, const model::Model& model,
+                                            const SummarySource& source) {
+  requireIndex(spec.element, model.elementCount(), spec, "element");
+  return source.element(spec.element);
+}
+
+std::pair<double, double> principalResultants(const SummarySpec& spec, const model::Model& model,
+                                              const SummarySource& source) {
+  const auto resultants = app::principalResultants(elementResult(spec, model, source));
   if (!resultants)
     throw std::out_of_range("summary \"" + spec.name + "\": element " +
                             std::to_string(spec.element + 1) + " is not a membrane");
   return *resultants;
 }
 
-double unscaled(const SummarySpec& spec, const model::Model& model, const ResultFrame& frame) {
+// The frame closing a step: everything is already computed.
+class FrameSource : public SummarySource {
+ public:
+  explicit FrameSource(const ResultFrame& frame) : frame_(frame) {}
+  const model::State& state() const override { return *frame_.state; }
+  const model::NodalField& reactions() const override { return frame_.reactions; }
+  const element::ElementResult& element(int e) const override { return frame_.elements.at(e); }
+  const std::vector<element::ElementResult>& elements() const override { return frame_.elements; }
+  const std::vector<double>& frequencies() const override { return frame_.frequencies; }
+
+ private:
+  const ResultFrame& frame_;
+};
+
+double unscaled(const SummarySpec& spec, const model::Model& model, const SummarySource& source) {
   using Q = SummarySpec::Quantity;
   const int n = spec.node, k = spec.component;
   switch (spec.quantity) {
     case Q::Displacement:
       requireNodeComponent(spec, model);
-      return frame.state->displacement(k, n);
+      return source.state().displacement(k, n);
     case Q::Position:
       requireNodeComponent(spec, model);
-      return model.reference()(k, n) + frame.state->displacement(k, n);
+      return model.reference()(k, n) + source.state().displacement(k, n);
+    case Q::Velocity:
+      requireNodeComponent(spec, model);
+      return source.state().velocity(k, n);
+    case Q::Speed:
+      requireIndex(n, model.nodeCount(), spec, "node");
+      return source.state().velocity.col(n).norm();
     case Q::Reaction:
       requireNodeComponent(spec, model);
-      return frame.reactions(k, n);
+      return source.reactions()(k, n);
     case Q::ReactionMagnitude:
       requireIndex(n, model.nodeCount(), spec, "node");
-      return frame.reactions.col(n).norm();
+      return source.reactions().col(n).norm();
     case Q::EndTension:
-      requireIndex(spec.element, static_cast<int>(frame.elements.size()), spec, "element");
       requireIndex(spec.end, 2, spec, "end");
-      return frame.elements[spec.element].end_tension[spec.end];
+      return elementResult(spec, model, source).end_tension[spec.end];
     case Q::MaxTension:
-      return maxTension(spec, frame);
-    case Q::Frequency:
-      requireIndex(spec.mode - 1, static_cast<int>(frame.frequencies.size()), spec,
-                   "mode (0-based)");
-      return frame.frequencies[spec.mode - 1];
+      return maxTension(spec, model, source);
+    case Q::Frequency: {
+      const std::vector<double>& omega = source.frequencies();
+      requireIndex(spec.mode - 1, static_cast<int>(omega.size()), spec, "mode (0-based)");
+      return omega[spec.mode - 1];
+    }
     case Q::ResultantMax:
-      return principalResultants(spec, frame).first;
+      return principalResultants(spec, model, source).first;
     case Q::ResultantMin:
-      return principalResultants(spec, frame).second;
+      return principalResultants(spec, model, source).second;
   }
   throw std::logic_error("summary \"" + spec.name + "\": unknown quantity");
 }
@@ -83,8 +109,13 @@ double unscaled(const SummarySpec& spec, const model::Model& model, const Result
 }  // namespace
 
 double evaluateSummary(const SummarySpec& spec, const model::Model& model,
+                       const SummarySource& source) {
+  return spec.scale * unscaled(spec, model, source);
+}
+
+double evaluateSummary(const SummarySpec& spec, const model::Model& model,
                        const ResultFrame& frame) {
-  return spec.scale * unscaled(spec, model, frame);
+  return evaluateSummary(spec, model, FrameSource(frame));
 }
 
 }  // namespace flexmoor::app

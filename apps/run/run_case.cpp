@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <map>
 #include <ostream>
 #include <set>
 
@@ -11,12 +12,13 @@
 #include "apps/output/output_lock.hpp"
 #include "apps/output/summary_json.hpp"
 #include "apps/output/summary_quantities.hpp"
+#include "apps/output/summary_series.hpp"
 #include "apps/output/vtk_writer.hpp"
 #include "apps/run/case_outputs.hpp"
 #include "apps/run/draw_figure.hpp"
 #include "libstruct/solve/modal.hpp"
-#include "libstruct/solve/newmark.hpp"
 #include "libstruct/solve/static_solver.hpp"
+#include "libstruct/solve/time_integrator.hpp"
 #include "libstruct/solve/viscous_relaxation.hpp"
 
 namespace flexmoor::app {
@@ -25,14 +27,18 @@ namespace {
 namespace fs = std::filesystem;
 const double kPi = std::acos(-1.0);
 
-// Everything one run shares: the model, its assembler, the netCDF writer and the log.
+// Everything one run shares: the model, its assembler, the netCDF writer and the log. The values
+// of the summary quantities taken over time go to `over_time` (index in c.summary -> value) as
+// their dynamic steps end.
 class Runner {
  public:
-  Runner(const Case& c, const std::string& netcdf_path, std::ostream& log)
+  Runner(const Case& c, const std::string& netcdf_path, std::ostream& log,
+         std::map<int, double>& over_time)
       : c_(c),
         log_(log),
         assembler_(std::make_unique<model::Assembler>(*c.model)),
-        writer_(netcdf_path, *c.model, c) {
+        writer_(netcdf_path, *c.model, c),
+        over_time_(over_time) {
     slog_.message = [&log](const std::string& s) { log << "  " << s << std::endl; };
     slog_.node_name = [&c](int n) { return "node " + std::to_string(c.node_ids[n]); };
   }
@@ -115,16 +121,18 @@ class Runner {
     return f;
   }
 
-  // Streams every output_every-th accepted state; progress every tenth of the duration.
+  // Streams every output_every-th accepted state; progress every tenth of the duration. The
+  // summary quantities taken over the step's time see its first state and every accepted one.
   ResultFrame dynamic(int i, model::State& state) {
     const StepSpec& step = c_.steps[i];
-    double duration = 0.0;
-    for (const auto& seg : step.dynamic.schedule) duration += seg.dt * seg.steps;
+    const double duration = step.duration();
     const double start = state.time, end = start + duration;
     int accepted = 0;
     double next_report = start + 0.1 * duration;
+    SummarySeries series(c_, i, *assembler_);
     auto on_step = [&](const model::State& s) {
       ++accepted;
+      series.sample(s);
       const bool last = s.time >= end - 1e-9 * std::max(1.0, duration);
       if (accepted % step.output_every == 0 || last) {
         write(frame(i, step.name, s));
@@ -135,8 +143,13 @@ class Runner {
         next_report += 0.1 * duration;
       }
     };
-    const solve::DynamicReport r =
-        solve::integrate(*assembler_, state, step.dynamic, slog_, on_step);
+    solve::TimeIntegrator integrator(*assembler_, step.dynamic, slog_);
+    integrator.start(state);
+    series.sample(state);
+    for (const solve::TimeSegment& segment : step.dynamic.schedule)
+      for (int k = 0; k < segment.steps; ++k) integrator.step(state, segment.dt, on_step);
+    const solve::DynamicReport& r = integrator.report();
+    for (const auto& [spec, value] : series.values()) over_time_[spec] = value;
     log_ << "  " << r.steps << " time steps, " << r.iterations << " Newton iterations, "
          << r.tangent_updates << " tangent updates, " << r.cuts << " step cuts\n";
     streamed_ = true;
@@ -152,17 +165,19 @@ class Runner {
   };
   std::vector<Released> released_;  // put back when the run ends: the case can run again
   NetcdfWriter writer_;
+  std::map<int, double>& over_time_;
   solve::SolveLog slog_;
   bool streamed_ = false;
 };
 
 // Runs the steps in order, streaming to `netcdf_path`; each finished step's closing state goes
-// to `states` and its frame to `frames`. Returns kNotConverged, after writing the last converged
-// state, when a step does not converge.
+// to `states` and its frame to `frames`, the summary quantities taken over a finished step's
+// time to `over_time`. Returns kNotConverged, after writing the last converged state, when a
+// step does not converge.
 ExitCode runSteps(const Case& c, const std::string& netcdf_path, std::ostream& log,
                   std::ostream& diag, std::vector<model::State>& states,
-                  std::vector<ResultFrame>& frames) {
-  Runner runner(c, netcdf_path, log);
+                  std::vector<ResultFrame>& frames, std::map<int, double>& over_time) {
+  Runner runner(c, netcdf_path, log, over_time);
   model::State state = c.model->initialState();
   for (size_t i = 0; i < c.steps.size(); ++i) {
     const StepSpec& step = c.steps[i];
@@ -196,13 +211,17 @@ std::string whatIsLeft(const CaseOutputs& files) {
 }
 
 std::vector<std::pair<std::string, double>> evaluate(
-    const Case& c, const std::vector<ResultFrame>& frames,
+    const Case& c, const std::vector<ResultFrame>& frames, const std::map<int, double>& over_time,
     std::vector<std::pair<std::string, std::string>>& units) {
   std::vector<std::pair<std::string, double>> values;
-  for (const SummarySpec& spec : c.summary) {
+  for (size_t k = 0; k < c.summary.size(); ++k) {
+    const SummarySpec& spec = c.summary[k];
     const int step = spec.step < 0 ? static_cast<int>(c.steps.size()) - 1 : spec.step;
     if (step >= static_cast<int>(frames.size())) continue;  // that step never finished
-    values.emplace_back(spec.name, evaluateSummary(spec, *c.model, frames[step]));
+    if (spec.reduction == SummarySpec::Reduction::StepEnd)
+      values.emplace_back(spec.name, evaluateSummary(spec, *c.model, frames[step]));
+    else
+      values.emplace_back(spec.name, over_time.at(static_cast<int>(k)));
     units.emplace_back(spec.name, spec.unit);
   }
   return values;
@@ -247,9 +266,10 @@ RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
     std::vector<model::State> states;  // the state closing each step; frames point into it
     states.reserve(c.steps.size());
     std::vector<ResultFrame> frames;
+    std::map<int, double> over_time;  // summary quantities taken over a dynamic step's time
     try {
-      out.exit_code = runSteps(c, files.partialNetcdf(), log, diag, states, frames);
-      out.summary = evaluate(c, frames, units);
+      out.exit_code = runSteps(c, files.partialNetcdf(), log, diag, states, frames, over_time);
+      out.summary = evaluate(c, frames, over_time, units);
       putOutputsInPlace(c, options, files, frames, out, units);
     } catch (const std::exception& e) {
       diag << "flexmoor: " << e.what() << "\n" << whatIsLeft(files);

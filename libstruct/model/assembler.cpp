@@ -331,17 +331,26 @@ NodalField Assembler::reactions(const State& state) const {
   return r;
 }
 
+element::ElementResult Assembler::elementResult(const State& state, int e,
+                                                EndForceScratch& scratch) const {
+  element::ElementResult r = model_.element(e).result(context(state, e));
+  const bool line = model_.element(e).nodes().size() >= 2 && !r.point_tension.empty() &&
+                    r.point_resultant.empty();
+  if (line) setEndTensions(state, e, scratch, r);
+  return r;
+}
+
+element::ElementResult Assembler::elementResult(const State& state, int e) const {
+  EndForceScratch scratch;
+  return elementResult(state, e, scratch);
+}
+
 std::vector<element::ElementResult> Assembler::elementResults(const State& state) const {
   std::vector<element::ElementResult> results;
   results.reserve(model_.elementCount());
   EndForceScratch scratch;  // sized by the first element, reused by the next ones
-  for (int e = 0; e < model_.elementCount(); ++e) {
-    results.push_back(model_.element(e).result(context(state, e)));
-    element::ElementResult& r = results.back();
-    const bool line = model_.element(e).nodes().size() >= 2 && !r.point_tension.empty() &&
-                      r.point_resultant.empty();
-    if (line) setEndTensions(state, e, scratch, r);
-  }
+  for (int e = 0; e < model_.elementCount(); ++e)
+    results.push_back(elementResult(state, e, scratch));
   return results;
 }
 

@@ -55,6 +55,9 @@ class Assembler {
   // nodes from its nodal force balance (see setEndTensions); its point tensions stay the
   // element's own, from the strain.
   std::vector<element::ElementResult> elementResults(const State& state) const;
+  // Element e's result alone (0-based), as elementResults gives it: what a quantity of one
+  // element needs in every time step.
+  element::ElementResult elementResult(const State& state, int e) const;
   // Support reactions F - P at the constrained dofs (inertia not included), zero elsewhere.
   NodalField reactions(const State& state) const;
 
@@ -74,6 +77,7 @@ class Assembler {
   };
   void setEndTensions(const State& state, int e, EndForceScratch& scratch,
                       element::ElementResult& r) const;
+  element::ElementResult elementResult(const State& state, int e, EndForceScratch& scratch) const;
 
   // The last internal force and external load computed, assembled and per element, with the
   // state they belong to. A record of an accepted time step asks for the forces of the very
