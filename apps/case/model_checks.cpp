@@ -10,6 +10,7 @@
 //              a mechanism, else a warning (the model runs, but perhaps not as meant).
 //   steps      modes and dynamic steps need a mass on every free dof; no more modes than free
 //              dofs; a warning for a time step too long for a periodic history it is driven by.
+//   ocean      no node and no body below the seabed; hydro: sections on lines only.
 #include <algorithm>
 #include <numeric>
 #include <set>
@@ -309,12 +310,66 @@ void checkSteps(CaseBuilder& b) {
   }
 }
 
+// "below the seabed (got z = -105 m, expected z >= -100 m, the bed's height at x = 3 m, y = 0 m)"
+std::string belowTheBed(const CaseBuilder& b, const Eigen::Vector3d& x, double bed) {
+  const std::string unit = " " + unitNames(b.c.units).length;
+  return "below the seabed (got z = " + formatNumber(x.z()) + unit +
+         ", expected z >= " + formatNumber(bed) + unit +
+         ", the bed's height at x = " + formatNumber(x.x()) + unit +
+         ", y = " + formatNumber(x.y()) + unit + ")";
+}
+
+// Nodes and bodies below the bed (more than the position tolerance) at the start; a node that
+// carries a body is reported as the body.
+void checkSeabed(CaseBuilder& b) {
+  const model::NodalField& X = b.model.reference();
+  const double tolerance = positionTolerance(b);
+  const auto below = [&](int node) {
+    return X(2, node) < b.hydro.bed.height(X(0, node), X(1, node)) - tolerance;
+  };
+  std::set<int> bodies;
+  for (const BodySpec& body : b.hydro.bodies) {
+    bodies.insert(body.node);
+    if (!below(body.node)) continue;
+    const Eigen::Vector3d x = X.col(body.node);
+    b.diag.error(body.line, body.where + ": its " + nodeName(b, body.node) + " is " +
+                                belowTheBed(b, x, b.hydro.bed.height(x.x(), x.y())));
+  }
+  int reported = 0, more = 0;
+  for (int node = 0; node < b.model.nodeCount(); ++node) {
+    if (bodies.count(node) || !below(node)) continue;
+    if (reported == kMaxReported) {
+      ++more;
+      continue;
+    }
+    ++reported;
+    const Eigen::Vector3d x = X.col(node);
+    b.diag.error(b.node_line[node],
+                 nodeName(b, node) + ": " + belowTheBed(b, x, b.hydro.bed.height(x.x(), x.y())));
+  }
+  if (more > 0) b.diag.error(0, "and " + std::to_string(more) + " more nodes below the seabed");
+}
+
+// Morison loads act on cable elements along their axis; a hoop ring has none.
+void checkHydroSections(CaseBuilder& b) {
+  for (int e = 0; e < b.model.elementCount(); ++e) {
+    const std::string& section = b.element_origin[e].section;
+    if (b.element_types[e] != "hoop_cable" || section.empty() || !b.sections.at(section)->hydro)
+      continue;
+    b.diag.error(b.element_origin[e].line,
+                 elementName(b, e) + ": Morison loads act on lines only (got section '" + section +
+                     "' with hydro: on a hoop ring, expected a section without hydro:)");
+  }
+}
+
 }  // namespace
 
 void checkModel(CaseBuilder& b) {
   checkGeometry(b);
   checkMechanisms(b);
   checkSteps(b);
+  if (b.hydro.has_water) checkSeabed(b);
+  checkHydroSections(b);
 }
 
 }  // namespace flexmoor::app
