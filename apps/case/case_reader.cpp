@@ -97,6 +97,7 @@ Case readCase(const std::string& path) {
     checkModel(b);
   }
   diag.throwIfAny();
+  buildOcean(b);
   c.warnings = diag.warnings();
   for (const std::string& w : c.warnings) std::cerr << "flexmoor: " << w << "\n";
   return c;
