@@ -9,7 +9,8 @@
 //   coincident two nodes at one point that no element joins: part of the error when they leave
 //              a mechanism, else a warning (the model runs, but perhaps not as meant).
 //   steps      modes and dynamic steps need a mass on every free dof; no more modes than free
-//              dofs; a warning for a time step too long for a periodic history it is driven by.
+//              dofs; a warning for a time step too long for a periodic history or a wave it is
+//              driven by.
 //   ocean      no node and no body below the seabed; hydro: sections on lines only.
 #include <algorithm>
 #include <numeric>
@@ -253,6 +254,12 @@ void checkMass(CaseBuilder& b, const StepSpec& step, const std::vector<double>& 
                    ", expected a density: on the sections, or a point_mass on those nodes)");
 }
 
+// A period that drives the model, named for the warnings ("history 'shake'", "wave 1 (line 17)").
+struct Forcing {
+  double period;
+  std::string name;
+};
+
 // The name of a history, for the warnings.
 std::string historyName(const CaseBuilder& b, const model::TimeFunction* f) {
   for (const auto& [name, h] : b.histories)
@@ -260,34 +267,39 @@ std::string historyName(const CaseBuilder& b, const model::TimeFunction* f) {
   return "";
 }
 
-// The periodic histories that drive the model: of loads, pressures and prescribed motions.
-std::set<const model::TimeFunction*> periodicHistories(const model::Model& m) {
+// The periodic histories that drive the model (of loads, pressures and prescribed motions) and
+// the periods of the waves.
+std::vector<Forcing> periodicForcing(const CaseBuilder& b) {
+  const model::Model& m = b.model;
   std::set<const model::TimeFunction*> used;
   for (const model::NodalLoad& load : m.nodalLoads()) used.insert(load.history.get());
   for (const model::PressureLoad& p : m.pressures()) used.insert(p.history.get());
   for (int node = 0; node < m.nodeCount(); ++node)
     for (int k = 0; k < 3; ++k) used.insert(m.motion(node, k));
-  std::set<const model::TimeFunction*> periodic;
+  std::vector<Forcing> periodic;
   for (const model::TimeFunction* f : used)
-    if (f && f->period() > 0.0) periodic.insert(f);
+    if (f && f->period() > 0.0)
+      periodic.push_back({f->period(), "history '" + historyName(b, f) + "'"});
+  for (size_t i = 0; i < b.hydro.waves.size(); ++i)
+    periodic.push_back({b.hydro.waves[i].period, "wave " + std::to_string(i + 1) + " (line " +
+                                                     std::to_string(b.hydro.waves[i].line) + ")"});
   return periodic;
 }
 
-void checkTimeStep(CaseBuilder& b, const StepSpec& step,
-                   const std::set<const model::TimeFunction*>& periodic) {
+void checkTimeStep(CaseBuilder& b, const StepSpec& step, const std::vector<Forcing>& periodic) {
   double dt = 0.0;
   for (const solve::TimeSegment& s : step.dynamic.schedule) dt = std::max(dt, s.dt);
   const std::string time = unitNames(b.c.units).time;
-  for (const model::TimeFunction* f : periodic) {
-    const double ratio = dt / f->period();
+  for (const Forcing& f : periodic) {
+    const double ratio = dt / f.period;
     if (ratio * kStepsPerPeriod <= 1.0) continue;
-    b.diag.warning(
-        step.where.line,
-        stepName(step) + ": dt = " + formatNumber(dt) + " " + time + " is " + formatNumber(ratio) +
-            " times the period " + formatNumber(f->period()) + " " + time + " of history '" +
-            historyName(b, f) + "' (dt / period = " + formatNumber(ratio) + "; fewer than " +
-            formatNumber(kStepsPerPeriod) + " steps a period do not resolve it, expected dt <= " +
-            formatNumber(f->period() / kStepsPerPeriod) + " " + time + ")");
+    b.diag.warning(step.where.line,
+                   stepName(step) + ": dt = " + formatNumber(dt) + " " + time + " is " +
+                       formatNumber(ratio) + " times the period " + formatNumber(f.period) + " " +
+                       time + " of " + f.name + " (dt / period = " + formatNumber(ratio) +
+                       "; fewer than " + formatNumber(kStepsPerPeriod) +
+                       " steps a period do not resolve it, expected dt <= " +
+                       formatNumber(f.period / kStepsPerPeriod) + " " + time + ")");
   }
 }
 
@@ -298,7 +310,7 @@ void checkSteps(CaseBuilder& b) {
   std::set<std::string> massless_sections;
   const std::vector<double> mass =
       needs_mass ? dofMass(b, massless_sections) : std::vector<double>();
-  const auto periodic = periodicHistories(b.model);
+  const std::vector<Forcing> periodic = periodicForcing(b);
   for (const StepSpec& step : b.c.steps) {
     if (step.kind == StepSpec::Kind::Modes || step.kind == StepSpec::Kind::Dynamic)
       checkMass(b, step, mass, massless_sections);

@@ -124,6 +124,55 @@ steps:
   EXPECT_NEAR(table.sea->at({0.0, 0.0, -10.0}, 0.0).velocity.x(), 0.3, 1e-15);
 }
 
+// A sloped and a tabulated bed: a line's end node 1 m under the bed is refused with the bed's
+// height there (by hand: the plane -30 + 0.5 x at x = 10 m is -25 m; the grid's bilinear height
+// at (10 m, 5 m), halfway between rows z = -22 and z = -26 m at x = 10 m, is -24 m), and the
+// same line 1 m above it reads. A 2 s wave stepped at 0.5 s is a warning (4 steps a period).
+TEST(CaseReaderOcean, NodesBelowASlopedOrTabulatedBedAreRefused) {
+  const auto with = [](const std::string& end_z, const std::string& seabed) {
+    return R"(units: SI
+materials:
+  steel: {type: linear_elastic, E: 2.0e11 Pa}
+sections:
+  wire: {material: steel, area: 1.0e-4 m^2, density: 7850 kg/m^3}
+lines:
+  - {name: cable, from: [0, 5 m, -20 m], to: [10 m, 5 m, )" +
+           end_z + R"(], elements: 2, order: 2, section: wire}
+supports:
+  - {node: cable.start, fix: [x, y, z]}
+  - {node: cable.end, fix: [x, y, z]}
+water: {density: 1025 kg/m^3, depth: 30 m}
+)" + seabed +
+           R"(
+steps:
+  - static: {name: s}
+)";
+  };
+  const std::string plane = "seabed: {slope: [0.5, 0]}";
+  const std::string grid =
+      "seabed:\n  grid: {x0: 0, dx: 10 m, y0: 0, dy: 10 m, z: [[-30 m, -22 m], [-30 m, -26 m]]}";
+  const std::string below_plane = test::writeCase("below-plane.yaml", with("-26 m", plane));
+  EXPECT_TRUE(test::anyContains(test::problems(below_plane),
+                                below_plane +
+                                    ":7: node 3: below the seabed (got z = -26 m, expected z >= "
+                                    "-25 m, the bed's height at x = 10 m, y = 5 m)"))
+      << test::joined(test::problems(below_plane));
+  EXPECT_TRUE(test::problems(test::writeCase("above-plane.yaml", with("-24 m", plane))).empty());
+  const std::string below_grid = test::writeCase("below-grid.yaml", with("-25 m", grid));
+  EXPECT_TRUE(test::anyContains(test::problems(below_grid), "expected z >= -24 m"))
+      << test::joined(test::problems(below_grid));
+  EXPECT_TRUE(test::problems(test::writeCase("above-grid.yaml", with("-23 m", grid))).empty());
+
+  const std::string waves = with("-20 m", "waves: [{height: 0.1 m, period: 2 s}]");
+  const Case c = readCase(test::writeCase(
+      "wave-step.yaml", waves.substr(0, waves.find("steps:")) +
+                            "steps:\n  - dynamic: {name: d, schedule: [{dt: 0.5 s, steps: 4}]}\n"));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_NE(c.warnings[0].find("dt = 0.5 s is 0.25 times the period 2 s of wave 1 (line 12)"),
+            std::string::npos)
+      << c.warnings[0];
+}
+
 // A vertical tether from the bed holding a submerged buoy, in still water: the anchor carries the
 // net buoyancy, rho g (V + A_d L) - (m_b + rho_s A L) g, by hand:
 //   rho g V    = 1025 * 9.81 * pi / 6         (sphere D = 1 m)
