@@ -235,7 +235,7 @@ std::optional<hydro::Bathymetry> readGrid(CaseBuilder& b, const YAML::Node& n,
 // seabed: {[stiffness], [damping], [friction: 0], [slip_speed], [slope: [sx, sy]] | [grid]};
 // the defaults are MoorDyn's (seabed_contact.hpp), the bed flat at -depth unless a slope (through
 // z = -depth at x = y = 0) or a grid says otherwise.
-bool readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
+void readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
   Fields f(b.diag, n, "seabed",
            {"stiffness", "damping", "friction", "slip_speed", "slope", "grid"});
   const hydro::SeabedProperties si;
@@ -248,31 +248,29 @@ bool readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
                              fromSi(b, si.slip_speed, kind::kVelocity));
   const YAML::Node* slope = f.find("slope");
   const YAML::Node* grid = f.find("grid");
-  bool ok = k && c && mu && slip;
   if (slope && grid) {
     b.diag.error(*grid, "seabed: give either slope (a plane) or grid (a table), not both");
-    return false;
+    return;
   }
   if (slope) {
     if (!slope->IsSequence() || slope->size() != 2) {
       b.diag.error(*slope, f.path("slope") + ": expected [dz/dx, dz/dy], two plain numbers (got " +
                                describeNode(*slope) + ")");
-      return false;
+      return;
     }
     const auto sx = b.in.quantity((*slope)[0], f.path("slope") + ".x", kind::kNumber);
     const auto sy = b.in.quantity((*slope)[1], f.path("slope") + ".y", kind::kNumber);
-    if (!sx || !sy) return false;
+    if (!sx || !sy) return;
     h.bed = hydro::Bathymetry::plane(-h.water.depth, *sx, *sy);
   }
   if (grid) {
     const auto bed = readGrid(b, *grid, f.path("grid"));
-    if (!bed) return false;
+    if (!bed) return;
     h.bed = *bed;
   }
-  if (!ok) return false;
+  if (!k || !c || !mu || !slip) return;
   h.contact = {*k, *c, *mu, *slip};
   h.has_contact = true;
-  return true;
 }
 
 // The mass a body puts at its node, from `mass:` or its weight in air `weight:` (over the
