@@ -12,6 +12,10 @@
 #include "libstruct/solve/modal.hpp"
 #include "libstruct/solve/solver_options.hpp"
 
+namespace flexmoor::hydro {
+class Sea;
+}
+
 namespace flexmoor::app {
 
 // A consistent unit system: US = ft, slug, s, lbf; SI = m, kg, s, N.
@@ -109,6 +113,8 @@ struct Case {
   std::vector<int> node_ids;  // the file's id of each model node (explicit or generated)
   std::map<std::string, std::vector<int>> lines;         // nodes of each named line, start to end
   std::map<std::string, std::vector<int>> element_sets;  // named groups (surfaces, lines), 0-based
+  // The water (`water:`, with its waves and current) whose loads act on the model; null for none.
+  std::shared_ptr<const hydro::Sea> sea;
   // "FILE:LINE: warning: ..." for what runs but perhaps not as meant (readCase prints them).
   std::vector<std::string> warnings;
 };

@@ -1,7 +1,7 @@
 #pragma once
 // The state of one case file being read, shared by the readers of its sections (one file each:
 // read_materials.cpp, read_mesh.cpp, read_surfaces.cpp, node_refs.cpp, read_histories.cpp,
-// read_conditions.cpp, read_steps.cpp, read_summary.cpp). A name defined with errors is remembered as broken, so that what refers to
+// read_conditions.cpp, read_hydro.cpp, read_steps.cpp, read_summary.cpp). A name defined with errors is remembered as broken, so that what refers to
 // it is not reported again.
 #include <map>
 #include <memory>
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "apps/case/case.hpp"
+#include "apps/case/hydro_spec.hpp"
 #include "apps/case/node_table.hpp"
 #include "apps/case/yaml_input.hpp"
 #include "libstruct/element/cable_element.hpp"
@@ -25,6 +26,7 @@ struct SectionSpec {
   // A membrane section (`thickness:` instead of `area:`); quadrature 0 = the element's default.
   bool is_membrane = false;
   element::MembraneSection membrane;
+  std::optional<LineHydroSpec> hydro;  // `hydro:`: Morison loads on the lines of this section
 };
 
 // What a section is asked for: cable-like elements (cables, hoop cables) or membranes.
@@ -92,6 +94,8 @@ struct CaseBuilder {
   // The support that fixed each dof first (3 * node + component -> line), to refuse a second
   // one that prescribes another value.
   std::unordered_map<long long, int> support_line;
+  bool gravity_given = false;  // `loads: gravity` (the water takes its magnitude)
+  HydroSpec hydro;             // the ocean sections (read_hydro.cpp)
 
   std::set<std::pair<int, int>> released;  // (node, component) freed by a step's release:
   // Adds a node with the next free id (after the largest so far).
@@ -127,6 +131,9 @@ void readNodeSets(CaseBuilder& b, const YAML::Node& n);
 void readHistories(CaseBuilder& b, const YAML::Node& n);  // read_histories.cpp
 void readSupports(CaseBuilder& b, const YAML::Node& n);
 void readLoads(CaseBuilder& b, const YAML::Node& n);
+// water:, waves:, current:, seabed: and bodies: of the top-level map, into b.hydro; a body's mass
+// becomes a point_mass element. Also refuses a section's hydro: without water.
+void readOcean(CaseBuilder& b, const Fields& top);
 void readSteps(CaseBuilder& b, const YAML::Node& n);
 void readSummary(CaseBuilder& b, const YAML::Node& n);
 void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp
@@ -135,6 +142,14 @@ void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp
 // nodes, steps that need a mass or more dofs than there are. Errors go to the Diagnostics;
 // warnings (the model runs, but perhaps not as meant) too, as warnings.
 void checkModel(CaseBuilder& b);
+// The sea of b.hydro and its loads on the model (build_hydro.cpp): Morison loads on the lines of
+// sections with hydro:, the bodies' loads, seabed contact; the sea kept in the Case. For a valid
+// case only (after checkModel).
+void buildOcean(CaseBuilder& b);
+
+// A section's `hydro:` (read_hydro.cpp).
+std::optional<LineHydroSpec> readLineHydro(CaseBuilder& b, const YAML::Node& n,
+                                           const std::string& path);
 
 // `history: NAME` of a load or a support: the named time function (read_histories.cpp); reports
 // an unknown name, returns nullptr for it and for a broken one.

@@ -15,8 +15,9 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::vector<std::string> kTopKeys = {
-    "name",     "title",     "units",    "materials", "sections", "nodes", "lines",  "surfaces",
-    "elements", "node_sets", "supports", "histories", "loads",    "steps", "summary", "figure"};
+    "name",     "title",    "units",     "materials", "sections",  "nodes",   "lines",
+    "surfaces", "elements", "node_sets", "supports",  "histories", "loads",   "water",
+    "waves",    "current",  "seabed",    "bodies",    "steps",     "summary", "figure"};
 
 // The case's name: used for output files, so a plain word.
 std::string readName(Diagnostics& diag, Input& in, const Fields& top, const std::string& path) {
@@ -83,6 +84,7 @@ Case readCase(const std::string& path) {
   readHistories(b, section("histories"));
   readSupports(b, section("supports"));
   readLoads(b, section("loads"));
+  readOcean(b, top);
   if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
   readSummary(b, section("summary"));
   readFigure(b, section("figure"));
@@ -96,6 +98,7 @@ Case readCase(const std::string& path) {
     checkModel(b);
   }
   diag.throwIfAny();
+  buildOcean(b);
   c.warnings = diag.warnings();
   for (const std::string& w : c.warnings) std::cerr << "flexmoor: " << w << "\n";
   return c;

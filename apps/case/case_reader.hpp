@@ -32,6 +32,18 @@
 //                         [stiffness_update], [tolerance], [residual_tolerance],
 //                         [criterion: displacement | residual | both], [max_iterations]}
 //              defaults: solve::RelaxationOptions, solve::StaticOptions
+//   water:     {density, depth}            gravity: |loads.gravity| (down), else standard g
+//   waves:     [components] | {components, [kinematics_above_mean: wheeler | constant],
+//                              [front: {start, [speed: group | phase], [ramp: 1 period]}]}
+//              component: {height, period, [heading: 0], [phase: 0]}  (Miche's limit checked)
+//   current:   {[profile: uniform], speed, [heading]} | {profile: power_law, speed, [heading],
+//              [exponent: 7], [reference_depth: depth]} | {profile: table, table: [[z, U], ...]}
+//   seabed:    {[stiffness: 3e6 Pa/m], [damping: 3e5 Pa s/m], [friction: 0],
+//              [slip_speed: 0.01 m/s], [slope: [dz/dx, dz/dy]] | [grid: {x0, dx, y0, dy, z}]}
+//   sections.NAME.hydro: {diameter, Cn, Ca, [Ct: 0], [CaAx: 0],
+//              [tangential_drag_area: perimeter | diameter], [per_length: deformed | unstretched]}
+//   bodies:    - {node: REF, type: sphere, diameter, Cd, [Ca: 0.5], [mass | weight]}
+//              - {node: REF, [type: point], volume, [drag_area: 0], [Ca: 0], [mass | weight]}
 //   summary:   NAME: {quantity, [node: REF], [element: ID, end: first | last], [scale: 1],
 //                     [step: NAME or 1-based index; default: the last step],
 //                     [at: TIME | stat: max | min | mean | std, [window: {[from], [to]}]]}

@@ -9,7 +9,9 @@
 //   coincident two nodes at one point that no element joins: part of the error when they leave
 //              a mechanism, else a warning (the model runs, but perhaps not as meant).
 //   steps      modes and dynamic steps need a mass on every free dof; no more modes than free
-//              dofs; a warning for a time step too long for a periodic history it is driven by.
+//              dofs; a warning for a time step too long for a periodic history or a wave it is
+//              driven by.
+//   ocean      no node and no body below the seabed; hydro: sections on lines only.
 #include <algorithm>
 #include <numeric>
 #include <set>
@@ -252,6 +254,12 @@ void checkMass(CaseBuilder& b, const StepSpec& step, const std::vector<double>& 
                    ", expected a density: on the sections, or a point_mass on those nodes)");
 }
 
+// A period that drives the model, named for the warnings ("history 'shake'", "wave 1 (line 17)").
+struct Forcing {
+  double period;
+  std::string name;
+};
+
 // The name of a history, for the warnings.
 std::string historyName(const CaseBuilder& b, const model::TimeFunction* f) {
   for (const auto& [name, h] : b.histories)
@@ -259,34 +267,39 @@ std::string historyName(const CaseBuilder& b, const model::TimeFunction* f) {
   return "";
 }
 
-// The periodic histories that drive the model: of loads, pressures and prescribed motions.
-std::set<const model::TimeFunction*> periodicHistories(const model::Model& m) {
+// The periodic histories that drive the model (of loads, pressures and prescribed motions) and
+// the periods of the waves.
+std::vector<Forcing> periodicForcing(const CaseBuilder& b) {
+  const model::Model& m = b.model;
   std::set<const model::TimeFunction*> used;
   for (const model::NodalLoad& load : m.nodalLoads()) used.insert(load.history.get());
   for (const model::PressureLoad& p : m.pressures()) used.insert(p.history.get());
   for (int node = 0; node < m.nodeCount(); ++node)
     for (int k = 0; k < 3; ++k) used.insert(m.motion(node, k));
-  std::set<const model::TimeFunction*> periodic;
+  std::vector<Forcing> periodic;
   for (const model::TimeFunction* f : used)
-    if (f && f->period() > 0.0) periodic.insert(f);
+    if (f && f->period() > 0.0)
+      periodic.push_back({f->period(), "history '" + historyName(b, f) + "'"});
+  for (size_t i = 0; i < b.hydro.waves.size(); ++i)
+    periodic.push_back({b.hydro.waves[i].period, "wave " + std::to_string(i + 1) + " (line " +
+                                                     std::to_string(b.hydro.waves[i].line) + ")"});
   return periodic;
 }
 
-void checkTimeStep(CaseBuilder& b, const StepSpec& step,
-                   const std::set<const model::TimeFunction*>& periodic) {
+void checkTimeStep(CaseBuilder& b, const StepSpec& step, const std::vector<Forcing>& periodic) {
   double dt = 0.0;
   for (const solve::TimeSegment& s : step.dynamic.schedule) dt = std::max(dt, s.dt);
   const std::string time = unitNames(b.c.units).time;
-  for (const model::TimeFunction* f : periodic) {
-    const double ratio = dt / f->period();
+  for (const Forcing& f : periodic) {
+    const double ratio = dt / f.period;
     if (ratio * kStepsPerPeriod <= 1.0) continue;
-    b.diag.warning(
-        step.where.line,
-        stepName(step) + ": dt = " + formatNumber(dt) + " " + time + " is " + formatNumber(ratio) +
-            " times the period " + formatNumber(f->period()) + " " + time + " of history '" +
-            historyName(b, f) + "' (dt / period = " + formatNumber(ratio) + "; fewer than " +
-            formatNumber(kStepsPerPeriod) + " steps a period do not resolve it, expected dt <= " +
-            formatNumber(f->period() / kStepsPerPeriod) + " " + time + ")");
+    b.diag.warning(step.where.line,
+                   stepName(step) + ": dt = " + formatNumber(dt) + " " + time + " is " +
+                       formatNumber(ratio) + " times the period " + formatNumber(f.period) + " " +
+                       time + " of " + f.name + " (dt / period = " + formatNumber(ratio) +
+                       "; fewer than " + formatNumber(kStepsPerPeriod) +
+                       " steps a period do not resolve it, expected dt <= " +
+                       formatNumber(f.period / kStepsPerPeriod) + " " + time + ")");
   }
 }
 
@@ -297,7 +310,7 @@ void checkSteps(CaseBuilder& b) {
   std::set<std::string> massless_sections;
   const std::vector<double> mass =
       needs_mass ? dofMass(b, massless_sections) : std::vector<double>();
-  const auto periodic = periodicHistories(b.model);
+  const std::vector<Forcing> periodic = periodicForcing(b);
   for (const StepSpec& step : b.c.steps) {
     if (step.kind == StepSpec::Kind::Modes || step.kind == StepSpec::Kind::Dynamic)
       checkMass(b, step, mass, massless_sections);
@@ -309,12 +322,66 @@ void checkSteps(CaseBuilder& b) {
   }
 }
 
+// "below the seabed (got z = -105 m, expected z >= -100 m, the bed's height at x = 3 m, y = 0 m)"
+std::string belowTheBed(const CaseBuilder& b, const Eigen::Vector3d& x, double bed) {
+  const std::string unit = " " + unitNames(b.c.units).length;
+  return "below the seabed (got z = " + formatNumber(x.z()) + unit +
+         ", expected z >= " + formatNumber(bed) + unit +
+         ", the bed's height at x = " + formatNumber(x.x()) + unit +
+         ", y = " + formatNumber(x.y()) + unit + ")";
+}
+
+// Nodes and bodies below the bed (more than the position tolerance) at the start; a node that
+// carries a body is reported as the body.
+void checkSeabed(CaseBuilder& b) {
+  const model::NodalField& X = b.model.reference();
+  const double tolerance = positionTolerance(b);
+  const auto below = [&](int node) {
+    return X(2, node) < b.hydro.bed.height(X(0, node), X(1, node)) - tolerance;
+  };
+  std::set<int> bodies;
+  for (const BodySpec& body : b.hydro.bodies) {
+    bodies.insert(body.node);
+    if (!below(body.node)) continue;
+    const Eigen::Vector3d x = X.col(body.node);
+    b.diag.error(body.line, body.where + ": its " + nodeName(b, body.node) + " is " +
+                                belowTheBed(b, x, b.hydro.bed.height(x.x(), x.y())));
+  }
+  int reported = 0, more = 0;
+  for (int node = 0; node < b.model.nodeCount(); ++node) {
+    if (bodies.count(node) || !below(node)) continue;
+    if (reported == kMaxReported) {
+      ++more;
+      continue;
+    }
+    ++reported;
+    const Eigen::Vector3d x = X.col(node);
+    b.diag.error(b.node_line[node],
+                 nodeName(b, node) + ": " + belowTheBed(b, x, b.hydro.bed.height(x.x(), x.y())));
+  }
+  if (more > 0) b.diag.error(0, "and " + std::to_string(more) + " more nodes below the seabed");
+}
+
+// Morison loads act on cable elements along their axis; a hoop ring has none.
+void checkHydroSections(CaseBuilder& b) {
+  for (int e = 0; e < b.model.elementCount(); ++e) {
+    const std::string& section = b.element_origin[e].section;
+    if (b.element_types[e] != "hoop_cable" || section.empty() || !b.sections.at(section)->hydro)
+      continue;
+    b.diag.error(b.element_origin[e].line,
+                 elementName(b, e) + ": Morison loads act on lines only (got section '" + section +
+                     "' with hydro: on a hoop ring, expected a section without hydro:)");
+  }
+}
+
 }  // namespace
 
 void checkModel(CaseBuilder& b) {
   checkGeometry(b);
   checkMechanisms(b);
   checkSteps(b);
+  if (b.hydro.has_water) checkSeabed(b);
+  checkHydroSections(b);
 }
 
 }  // namespace flexmoor::app

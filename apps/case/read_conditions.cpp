@@ -134,9 +134,12 @@ void readGravity(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
     const auto value =
         g ? b.in.quantity(*g, f.path("g"), kind::kAcceleration, Limit::NonNegative) : std::nullopt;
     if (value) b.model.setGravity(Eigen::Vector3d(0.0, 0.0, -*value));
+    b.gravity_given = value.has_value();
     return;
   }
-  if (const auto g = b.in.vector3(n, path, kind::kAcceleration)) b.model.setGravity(*g);
+  const auto g = b.in.vector3(n, path, kind::kAcceleration);
+  if (g) b.model.setGravity(*g);
+  b.gravity_given = g.has_value();
 }
 
 }  // namespace

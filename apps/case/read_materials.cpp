@@ -72,7 +72,7 @@ MaterialLaws readMaterial(CaseBuilder& b, const MapEntry& e) {
 // law).
 std::optional<SectionSpec> readSection(CaseBuilder& b, const MapEntry& e) {
   Fields f(b.diag, e.value, childPath("sections", e.key),
-           {"material", "area", "thickness", "density", "quadrature"});
+           {"material", "area", "thickness", "density", "quadrature", "hydro"});
   SectionSpec s;
   const YAML::Node* area = f.find("area");
   const YAML::Node* thickness = f.find("thickness");
@@ -114,7 +114,19 @@ std::optional<SectionSpec> readSection(CaseBuilder& b, const MapEntry& e) {
   s.membrane.density = density;
   if (const YAML::Node* q = f.find("quadrature"))
     s.quadrature = b.in.integer(*q, f.path("quadrature"), 0, 32).value_or(-1);
-  if (!material_ok || !size || s.quadrature < 0) return std::nullopt;
+  bool hydro_ok = true;
+  if (const YAML::Node* h = f.find("hydro")) {
+    if (s.is_membrane) {
+      b.diag.error(*h, f.path("hydro") +
+                           ": Morison loads act on lines only (got hydro: on a membrane section "
+                           "with thickness, expected it on a cable section with area)");
+      hydro_ok = false;
+    } else {
+      s.hydro = readLineHydro(b, *h, f.path("hydro"));
+      hydro_ok = s.hydro.has_value();
+    }
+  }
+  if (!material_ok || !size || s.quadrature < 0 || !hydro_ok) return std::nullopt;
   return s;
 }
 

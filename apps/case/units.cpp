@@ -82,18 +82,13 @@ constexpr BaseUnit kBaseUnits[] = {
 };
 
 constexpr QuantityKind kNamedKinds[] = {
-    kind::kLength,
-    kind::kArea,
-    kind::kMass,
-    kind::kTime,
-    kind::kForce,
-    kind::kPressure,
-    kind::kDensity,
-    kind::kAcceleration,
-    kind::kStiffness,
-    {"a volume", {0, 3, 0}},
-    {"a velocity", {0, 1, -1}},
-    {"a frequency", {0, 0, -1}},
+    kind::kLength,     kind::kArea,
+    kind::kMass,       kind::kTime,
+    kind::kForce,      kind::kPressure,
+    kind::kDensity,    kind::kAcceleration,
+    kind::kStiffness,  kind::kVolume,
+    kind::kVelocity,   kind::kBedStiffness,
+    kind::kBedDamping, {"a frequency", {0, 0, -1}},
 };
 
 std::string baseUnitList() {

@@ -44,6 +44,11 @@ inline constexpr QuantityKind kPressure{"a pressure", {1, -1, -2}};
 inline constexpr QuantityKind kDensity{"a density (mass per volume)", {1, -3, 0}};
 inline constexpr QuantityKind kAcceleration{"an acceleration", {0, 1, -2}};
 inline constexpr QuantityKind kStiffness{"a force per length", {1, 0, -2}};
+inline constexpr QuantityKind kVolume{"a volume", {0, 3, 0}};
+inline constexpr QuantityKind kVelocity{"a velocity", {0, 1, -1}};
+// A seabed's penalty stiffness and damping per projected area (MoorDyn's kBot and cBot).
+inline constexpr QuantityKind kBedStiffness{"a pressure per length (like Pa/m)", {1, -2, -2}};
+inline constexpr QuantityKind kBedDamping{"a pressure per velocity (like Pa s/m)", {1, -2, -1}};
 }  // namespace kind
 
 // A malformed value or unit expression, or a unit of the wrong dimension.

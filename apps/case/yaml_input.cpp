@@ -140,6 +140,12 @@ const YAML::Node* Fields::find(const std::string& key) const {
   return nullptr;
 }
 
+int Fields::keyLine(const std::string& key) const {
+  for (const MapEntry& e : entries_)
+    if (e.key == key) return lineOf(e.key_node);
+  return 0;
+}
+
 const YAML::Node* Fields::require(const std::string& key) {
   const YAML::Node* n = find(key);
   if (!n && is_map_) diag_.error(map_, prefix(path_) + "missing key '" + key + "'");

@@ -63,6 +63,7 @@ class Fields {
 
   const YAML::Node* find(const std::string& key) const;  // nullptr when absent
   const YAML::Node* require(const std::string& key);     // reports a missing key in a map
+  int keyLine(const std::string& key) const;             // 1-based line of a present key, else 0
   std::string path(const std::string& key) const { return childPath(path_, key); }
   const std::string& path() const { return path_; }
   const YAML::Node& node() const { return map_; }

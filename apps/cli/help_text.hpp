@@ -103,7 +103,8 @@ inline constexpr const char* kCheckSummary = "check a case file without running 
 inline constexpr const char* kCheckDetails = R"(
 Reads CASE and checks everything that can be known without solving: YAML syntax, keys and
 their types, units and dimensions, value ranges, references to materials, sections, nodes,
-lines, surfaces and histories, the geometry of the elements, and the steps and summary.
+lines, surfaces and histories, the geometry of the elements, the ocean (waves that would break,
+nodes and bodies below the seabed), and the steps and summary.
 A valid case prints one line (its nodes, elements, equations and steps) on stdout.
 
 Exit codes: 0 the case is valid; 1 usage error; 2 the case is invalid: every problem is listed

@@ -1,0 +1,71 @@
+// The sea of a case's ocean sections (hydro_spec.hpp) and its loads on the model: Morison loads on
+// the cable elements of sections with hydro: (one load per length measure in use), the bodies'
+// loads at their nodes, and seabed contact over the lines' hydrodynamic diameters.
+#include <memory>
+
+#include "apps/case/case_builder.hpp"
+#include "libhydro/loads/body_node_load.hpp"
+#include "libhydro/loads/morison_line_load.hpp"
+#include "libhydro/seabed/seabed_line_load.hpp"
+
+namespace flexmoor::app {
+namespace {
+
+std::shared_ptr<const hydro::Sea> makeSea(const HydroSpec& h) {
+  auto sea = std::make_shared<hydro::Sea>(h.water);
+  for (const WaveSpec& w : h.waves)
+    sea->addComponent(hydro::WaveComponent::fromHeightAndPeriod(
+        w.height, w.period, w.heading, w.phase, h.water.depth, h.water.gravity));
+  if (h.front) sea->setFront(*h.front);
+  if (h.current) sea->setCurrent(*h.current);
+  sea->setSurfaceKinematics(h.surface);
+  return sea;
+}
+
+// The hydro: of each model element's section: cable elements only (a hoop ring has none).
+std::vector<const LineHydroSpec*> elementHydro(const CaseBuilder& b) {
+  std::vector<const LineHydroSpec*> hydro(b.model.elementCount(), nullptr);
+  for (int e = 0; e < b.model.elementCount(); ++e) {
+    const auto s = b.sections.find(b.element_origin[e].section);
+    if (b.element_types[e] == "cable" && s != b.sections.end() && s->second && s->second->hydro)
+      hydro[e] = &*s->second->hydro;
+  }
+  return hydro;
+}
+
+void addMorisonLoads(CaseBuilder& b, const std::shared_ptr<const hydro::Sea>& sea,
+                     const std::vector<const LineHydroSpec*>& hydro) {
+  for (const model::LengthMeasure measure :
+       {model::LengthMeasure::Current, model::LengthMeasure::Reference}) {
+    std::vector<std::optional<hydro::MorisonCoefficients>> sections(hydro.size());
+    bool any = false;
+    for (size_t e = 0; e < hydro.size(); ++e)
+      if (hydro[e] && hydro[e]->per_length == measure) {
+        sections[e] = hydro[e]->coefficients;
+        any = true;
+      }
+    if (any)
+      b.model.addLineLoad(
+          std::make_shared<hydro::MorisonLineLoad>(sea, std::move(sections), measure));
+  }
+}
+
+}  // namespace
+
+void buildOcean(CaseBuilder& b) {
+  const HydroSpec& h = b.hydro;
+  if (!h.has_water) return;
+  const std::shared_ptr<const hydro::Sea> sea = makeSea(h);
+  b.c.sea = sea;
+  const std::vector<const LineHydroSpec*> hydro = elementHydro(b);
+  addMorisonLoads(b, sea, hydro);
+  for (const BodySpec& body : h.bodies)
+    b.model.addNodeLoad(std::make_shared<hydro::BodyNodeLoad>(body.node, body.body, sea));
+  if (!h.has_contact) return;
+  std::vector<double> widths(hydro.size(), 0.0);
+  for (size_t e = 0; e < hydro.size(); ++e)
+    if (hydro[e]) widths[e] = hydro[e]->coefficients.diameter;
+  b.model.addLineLoad(std::make_shared<hydro::SeabedLineLoad>(h.bed, h.contact, std::move(widths)));
+}
+
+}  // namespace flexmoor::app

@@ -1,0 +1,59 @@
+#pragma once
+// The ocean sections of a case file as read (read_hydro.cpp), in the case's unit system:
+// `water:`, `waves:`, `current:`, `seabed:`, `bodies:` and a section's `hydro:`. build_hydro.cpp
+// turns them into a hydro::Sea and the loads that put it on the model.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "libhydro/loads/morison.hpp"
+#include "libhydro/loads/point_body.hpp"
+#include "libhydro/seabed/bathymetry.hpp"
+#include "libhydro/seabed/seabed_contact.hpp"
+#include "libhydro/water/current_profile.hpp"
+#include "libhydro/water/water.hpp"
+#include "libhydro/waves/sea.hpp"
+#include "libhydro/waves/wave_front.hpp"
+#include "libstruct/model/load_point.hpp"
+
+namespace flexmoor::app {
+
+// A section's `hydro:`: Morison's coefficients of the lines made of it, per deformed or
+// unstretched length.
+struct LineHydroSpec {
+  hydro::MorisonCoefficients coefficients;
+  model::LengthMeasure per_length = model::LengthMeasure::Current;
+  int line = 0;  // of the `hydro:` key
+};
+
+// One regular wave component of `waves:` (angles in rad).
+struct WaveSpec {
+  double height = 0.0, period = 0.0, heading = 0.0, phase = 0.0;
+  int line = 0;
+};
+
+// One item of `bodies:`; its mass, if it gives one, is a point_mass element at the node.
+struct BodySpec {
+  int node = -1;
+  hydro::PointBody body;
+  int line = 0;
+  std::string where;  // "bodies[2]"
+};
+
+struct HydroSpec {
+  bool has_water = false;  // `water:` given: nothing else of the ocean applies without it
+  int water_line = 0;
+  hydro::Water water;
+  std::vector<WaveSpec> waves;
+  hydro::SurfaceKinematics surface = hydro::SurfaceKinematics::Wheeler;
+  std::optional<hydro::WaveFront> front;
+  std::optional<hydro::CurrentProfile> current;
+  // The bed lies at -depth unless `seabed:` gives a slope or a grid; contact acts only with
+  // `seabed:` (has_contact).
+  hydro::Bathymetry bed = hydro::Bathymetry::flat(0.0);
+  bool has_contact = false;
+  hydro::SeabedProperties contact;
+  std::vector<BodySpec> bodies;
+};
+
+}  // namespace flexmoor::app
