@@ -50,6 +50,45 @@ std::string unitOf(Measure m, UnitSystem system, bool per_radian) {
   return "";
 }
 
+Dimension dimensionOf(Measure m) {
+  switch (m) {
+    case Measure::Length:
+      return kind::kLength.dimension;
+    case Measure::Velocity:
+      return {0, 1, -1};
+    case Measure::Force:
+    case Measure::Reaction:
+      return kind::kForce.dimension;
+    case Measure::ForcePerLength:
+      return {1, 0, -2};
+    case Measure::AngularFrequency:
+      return {0, 0, -1};
+  }
+  return {};
+}
+
+// `unit: in` reports the quantity in that unit (of its dimension) instead of the case system's.
+void readReportUnit(CaseBuilder& b, const Fields& f, Measure measure, SummarySpec& s) {
+  const YAML::Node* n = f.find("unit");
+  if (!n) return;
+  const auto text = b.in.text(*n, f.path("unit"));
+  if (!text) return;
+  const Dimension wanted = dimensionOf(measure);
+  try {
+    const Unit u = parseUnit(*text);
+    if (u.dimension != wanted) {
+      b.diag.error(*n, f.path("unit") + ": not a unit of this quantity (got '" + *text + "', " +
+                           describeDimension(u.dimension) + ", expected " +
+                           describeDimension(wanted) + " like " + s.unit + ")");
+      return;
+    }
+    s.scale *= systemScale(wanted, b.in.units) / u.si_factor;
+    s.unit = *text;
+  } catch (const UnitError& e) {
+    b.diag.error(*n, f.path("unit") + ": " + e.what());
+  }
+}
+
 const std::vector<std::pair<std::string, QuantityInfo>>& quantities() {
   static const std::vector<std::pair<std::string, QuantityInfo>> table = {
       {"displacement_x", {Quantity::Displacement, 0, Measure::Length, Target::Node}},
@@ -269,7 +308,8 @@ bool readReduction(CaseBuilder& b, Fields& f, int index, SummarySpec& s) {
 
 std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   Fields f(b.diag, e.value, childPath("summary", e.key),
-           {"quantity", "node", "element", "end", "mode", "scale", "step", "at", "stat", "window"});
+           {"quantity", "node", "element", "end", "mode", "scale", "unit", "step", "at", "stat",
+            "window"});
   SummarySpec s;
   s.name = e.key;
   s.where = {b.diag.file(), lineOf(e.key_node)};
@@ -284,6 +324,13 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   s.quantity = info.quantity;
   s.component = info.component;
   s.unit = unitOf(info.measure, b.in.units, axisymmetric(b));
+  if (info.measure == Measure::Reaction && axisymmetric(b) && f.find("unit"))
+    b.diag.error(*f.find("unit"), f.path("unit") +
+                                      ": reactions of an axisymmetric model are per "
+                                      "radian, in the case's units only (got unit:, "
+                                      "expected no unit:)");
+  else
+    readReportUnit(b, f, info.measure, s);
   if (info.target == Target::Node) {
     const YAML::Node* n = f.require("node");
     const auto node = n ? nodeRef(b, *n, f.path("node")) : std::nullopt;
