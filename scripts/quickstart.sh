@@ -3,4 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-build/bin/flexmoor run "${1:-ex1-suspended-cable-8xL2}"   # results in results/<case>/
+build/bin/flexmoor run "${1:-ex8-relaxation-test}"   # results, summary and figure in results/<case>/
