@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/scenario.hpp"
 #include "apps/case/yaml_load.hpp"
 
 namespace flexmoor::app {
@@ -53,7 +54,8 @@ std::vector<fs::path> caseFiles() {
 Case readCase(const std::string& path) {
   Diagnostics diag(path);
   std::optional<NodeTable> node_table;
-  const YAML::Node root = loadCaseDocument(diag, node_table);
+  const YAML::Node root = expandScenario(diag, loadCaseDocument(diag, node_table));
+  diag.throwIfAny();  // a scenario that could not be expanded: its own messages say why
   Case c;
   c.file = path;
   c.model = std::make_unique<model::Model>();

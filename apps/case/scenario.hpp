@@ -1,0 +1,18 @@
+#pragma once
+// Scenarios: a few keys that stand for a whole model. `scenario: NAME` in a case file is expanded,
+// before the case is read, into the sections it stands for (materials, sections, lines, bodies,
+// supports, loads, steps and, unless the case gives its own, summary and figure); the expanded
+// document is then read like any other, so every value is checked as usual. Values the scenario
+// copies keep their place in the file for messages; values it derives are written in the case's
+// units.
+#include <yaml-cpp/yaml.h>
+
+#include "apps/case/diagnostics.hpp"
+
+namespace flexmoor::app {
+
+// The document to read: `root` itself when it names no scenario, else its expansion. Errors in
+// the scenario's own keys go to `diag`.
+YAML::Node expandScenario(Diagnostics& diag, const YAML::Node& root);
+
+}  // namespace flexmoor::app

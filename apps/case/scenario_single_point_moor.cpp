@@ -1,0 +1,306 @@
+// scenario: single_point_moor: an anchor, a rope or cable, and a buoy at its end, in water; the
+// buoy is held at a given position while viscous relaxation finds the line's displaced shape,
+// then released (its support removed: its buoyancy, weight and the line's pull act) and the
+// motion integrated in time. The dissertation's Example 8 is one. The model is planar (x-z).
+//
+//   scenario: single_point_moor
+//   water: {density: 1.94364 slug/ft^3, depth: 80 in}     # required
+//   anchor: [0, 0, -80 in]         # default: on the bed below the origin
+//   cable: {length, EA, weight_in_air, weight_in_water (a check), diameter, elements: 4,
+//           order: 3, Cn, Ct, Ca, CaAx, tangential_drag_area, per_length}
+//   buoy: {held_at: [x, z] from the anchor, diameter, weight_in_air,
+//          weight_in_water (its buoyancy; default a sphere's), Cd, Ca: 0.5}
+//   relax: {...}                   # the hold; keys of a relax step, defaults below
+//   dynamic: {dt, steps, ...}      # after the release; keys of a dynamic step
+//   summary:, figure:              # default: the buoy's final x and z, its largest speed, the
+//                                  # largest anchor tension; a figure of the buoy's x, z, speed
+//                                  # and the anchor tension
+//
+// Node names: the anchor is cable.start, the buoy cable.end.
+#include <cmath>
+#include <sstream>
+
+#include "apps/case/scenario.hpp"
+#include "apps/case/units.hpp"
+#include "apps/case/yaml_input.hpp"
+
+namespace flexmoor::app {
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+YAML::Node flowSequence(std::initializer_list<std::string> items) {
+  YAML::Node n(YAML::NodeType::Sequence);
+  for (const std::string& i : items) n.push_back(i);
+  return n;
+}
+
+// Standard gravity in the case's system (9.80665 m/s^2 = 32.174 ft/s^2).
+double standardGravity(UnitSystem system) {
+  return 9.80665 / systemScale(kind::kAcceleration.dimension, system);
+}
+
+UnitSystem quietUnits(const YAML::Node& root) {
+  const YAML::Node u = root["units"];
+  return u && u.IsScalar() && u.Scalar() == "US" ? UnitSystem::US : UnitSystem::SI;
+}
+
+// The keys the scenario makes: a case that names the scenario does not give them itself.
+const std::vector<std::string>& generatedKeys() {
+  static const std::vector<std::string> keys = {"materials", "sections", "nodes",  "lines",
+                                                "surfaces",  "elements", "bodies", "supports",
+                                                "loads",     "node_sets"};
+  return keys;
+}
+
+struct Hold {
+  double x = 0.0, z = 0.0;
+};
+
+}  // namespace
+
+YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
+  const UnitSystem units = quietUnits(root);
+  Input in(diag, units);
+  Fields top(diag, root, "",
+             {"name",   "title",    "units",    "scenario",  "water",     "waves",    "current",
+              "seabed", "anchor",   "cable",    "buoy",      "gravity",   "relax",    "dynamic",
+              "steps",  "summary",  "figure",   "histories", "materials", "sections", "nodes",
+              "lines",  "surfaces", "elements", "bodies",    "supports",  "loads",    "node_sets"});
+  for (const std::string& key : generatedKeys())
+    if (top.find(key))
+      diag.error(top.keyLine(key), key + ": given with scenario: single_point_moor (got " + key +
+                                       ":, expected the scenario's keys anchor:, cable:, buoy: "
+                                       "and no " +
+                                       key + ": of the case's own)");
+  // Water: its density and depth make the rope's buoyancy and the anchor's default place.
+  double rho = 0.0, depth = 0.0;
+  if (const YAML::Node* w = top.require("water")) {
+    const YAML::Node d = (*w)["density"], h = (*w)["depth"];
+    if (d) rho = in.quantity(d, "water.density", kind::kDensity, Limit::Positive).value_or(0.0);
+    if (h) depth = in.quantity(h, "water.depth", kind::kLength, Limit::Positive).value_or(0.0);
+  }
+  double g = standardGravity(units);
+  if (const YAML::Node* n = top.find("gravity"))
+    g = in.quantity(*n, "gravity", kind::kAcceleration, Limit::Positive).value_or(g);
+  Eigen::Vector3d anchor(0.0, 0.0, -depth);
+  if (const YAML::Node* n = top.find("anchor"))
+    anchor = in.vector3(*n, "anchor", kind::kLength).value_or(anchor);
+
+  // The line.
+  const YAML::Node* cable_node = top.require("cable");
+  Fields cable(diag, cable_node ? *cable_node : YAML::Node(), "cable",
+               {"length", "EA", "weight_in_air", "weight_in_water", "diameter", "elements", "order",
+                "Cn", "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length"});
+  const auto need = [&](Fields& f, const char* key, const QuantityKind& kind) {
+    const YAML::Node* n = f.require(key);
+    return n ? in.quantity(*n, f.path(key), kind, Limit::Positive) : std::nullopt;
+  };
+  const auto length = need(cable, "length", kind::kLength);
+  const auto ea = need(cable, "EA", kind::kForce);
+  const QuantityKind weight_per_length{"a force per length", {1, 0, -2}};
+  const auto w_air = need(cable, "weight_in_air", weight_per_length);
+  const auto d = need(cable, "diameter", kind::kLength);
+  const int elements = in.integerOr(cable, "elements", 1, 4);
+  const int order = in.integerOr(cable, "order", 2, 3);
+  if (order > 4)
+    diag.error(cable.keyLine("order"), "cable.order: out of range (got " + std::to_string(order) +
+                                           ", expected 2, 3 or 4 nodes an element)");
+  const double area = d ? kPi * *d * *d / 4.0 : 0.0;
+  if (const YAML::Node* n = cable.find("weight_in_water")) {
+    const auto w_water = in.quantity(*n, cable.path("weight_in_water"), weight_per_length);
+    if (w_water && w_air && d && rho > 0.0) {
+      const double expected = *w_air - rho * g * area;
+      if (std::abs(*w_water - expected) > 0.01 * std::abs(*w_air))
+        diag.error(*n,
+                   "cable.weight_in_water: does not match the buoyancy of the diameter in "
+                   "this water (got " +
+                       formatNumber(*w_water) + ", expected " + formatNumber(expected) +
+                       " = weight_in_air - rho g pi d^2 / 4, within 1% of the weight in "
+                       "air)");
+    }
+  }
+
+  // The buoy.
+  const YAML::Node* buoy_node = top.require("buoy");
+  Fields buoy(diag, buoy_node ? *buoy_node : YAML::Node(), "buoy",
+              {"held_at", "diameter", "weight_in_air", "weight_in_water", "Cd", "Ca"});
+  std::optional<Hold> hold;
+  if (const YAML::Node* h = buoy.require("held_at")) {
+    if (!h->IsSequence() || h->size() != 2) {
+      diag.error(*h,
+                 "buoy.held_at: expected [x, z] from the anchor (got " + describeNode(*h) + ")");
+    } else {
+      const auto x = in.quantity((*h)[0], "buoy.held_at.x", kind::kLength);
+      const auto z = in.quantity((*h)[1], "buoy.held_at.z", kind::kLength);
+      if (x && z) hold = Hold{*x, *z};
+    }
+  }
+  const auto diameter = need(buoy, "diameter", kind::kLength);
+  const YAML::Node* weight = buoy.require("weight_in_air");
+  const YAML::Node* cd = buoy.require("Cd");
+  std::optional<double> volume;
+  if (const YAML::Node* n = buoy.find("weight_in_water")) {
+    const auto w_water = in.quantity(*n, buoy.path("weight_in_water"), kind::kForce);
+    const auto w =
+        weight ? in.quantity(*weight, buoy.path("weight_in_air"), kind::kForce, Limit::NonNegative)
+               : std::nullopt;
+    if (w_water && w && rho > 0.0) {
+      if (*w - *w_water <= 0.0)
+        diag.error(*n, "buoy.weight_in_water: not below its weight in air (got " +
+                           formatNumber(*w_water) + ", expected less than " + formatNumber(*w) +
+                           ": the water buoys it up)");
+      else
+        volume = (*w - *w_water) / (rho * g);
+    }
+  }
+  if (hold && length && std::hypot(hold->x, hold->z) > *length)
+    diag.warning(buoy.keyLine("held_at"),
+                 "buoy.held_at: " + formatNumber(std::hypot(hold->x, hold->z)) +
+                     " from the anchor, further than the line's unstretched length " +
+                     formatNumber(*length) + ": the line is stretched while held");
+  const YAML::Node* steps = top.find("steps");
+  const YAML::Node* dynamic = steps ? top.find("dynamic") : top.require("dynamic");
+  for (const char* key : {"relax", "dynamic"}) {
+    const YAML::Node* n = top.find(key);
+    if (n && steps)
+      diag.error(*n, std::string(key) +
+                         ": given with steps: (expected the scenario's relax: and "
+                         "dynamic:, or steps: of the case's own)");
+    else if (n && !n->IsMap())
+      diag.error(*n, std::string(key) + ": expected a map of the step's keys (got " +
+                         describeNode(*n) + ")");
+  }
+  const auto cd_value =
+      cd ? in.quantity(*cd, buoy.path("Cd"), kind::kNumber, Limit::NonNegative) : std::nullopt;
+  if (!diag.empty() || !length || !ea || !w_air || !d || !hold || !diameter || !weight ||
+      !cd_value || !(dynamic || steps))
+    return root;
+
+  // The expanded document: the case's own keys, then what the scenario stands for.
+  YAML::Node doc(YAML::NodeType::Map);
+  for (const auto& key : {"name", "title", "units", "water", "waves", "current", "seabed",
+                          "histories", "summary", "figure"})
+    if (const YAML::Node* n = top.find(key)) doc[key] = *n;
+  doc["materials"]["line"]["type"] = "linear_elastic";
+  doc["materials"]["line"]["E"] = number(*ea / area);  // EA over pi d^2 / 4
+  YAML::Node section;
+  section["material"] = "line";
+  section["area"] = number(area);
+  section["density"] = number(*w_air / (g * area));  // mass per length over the area
+  YAML::Node hydro;
+  hydro["diameter"] = *cable.find("diameter");
+  for (const char* key : {"Cn", "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length"})
+    if (const YAML::Node* n = cable.find(key)) hydro[key] = *n;
+  section["hydro"] = hydro;
+  doc["sections"]["line"] = section;
+  YAML::Node line;
+  line["name"] = "cable";
+  line["from"] = flowSequence({number(anchor.x()), number(anchor.y()), number(anchor.z())});
+  line["to"] = flowSequence({number(anchor.x() + *length), number(anchor.y()), number(anchor.z())});
+  line["elements"] = elements;
+  line["order"] = order;
+  line["section"] = "line";
+  doc["lines"].push_back(line);
+  YAML::Node body;
+  body["node"] = "cable.end";
+  body["Cd"] = *cd;
+  if (volume) {  // the stated weights in water and air make its buoyancy
+    body["type"] = "point";
+    body["volume"] = number(*volume);
+    body["drag_area"] = number(*cd_value * kPi * *diameter * *diameter / 4.0);
+    body.remove("Cd");
+  } else {
+    body["type"] = "sphere";
+    body["diameter"] = *buoy.find("diameter");
+  }
+  body["Ca"] = buoy.find("Ca") ? *buoy.find("Ca") : YAML::Node("0.5");
+  body["weight"] = *weight;
+  doc["bodies"].push_back(body);
+  YAML::Node planar, fixed_anchor, held;
+  planar["nodes"] = "all";
+  planar["fix"] = flowSequence({"y"});
+  fixed_anchor["node"] = "cable.start";
+  fixed_anchor["fix"] = flowSequence({"x", "z"});
+  held["node"] = "cable.end";
+  held["fix"] = flowSequence({"x", "z"});
+  held["displacement"] = flowSequence({number(hold->x - *length), number(hold->z)});
+  for (const YAML::Node& s : {planar, fixed_anchor, held}) doc["supports"].push_back(s);
+  doc["loads"]["gravity"]["g"] = number(g);
+  // Unless the case says otherwise: where the buoy ends, how fast it went, how hard the anchor
+  // was pulled, and a figure of the four over time.
+  if (!top.find("summary")) {
+    const auto quantity = [](const char* q, const char* stat) {
+      YAML::Node n;
+      n["quantity"] = q;
+      if (std::string(q) == "end_tension") {
+        n["element"] = 1;
+        n["end"] = "first";
+      } else {
+        n["node"] = "cable.end";
+      }
+      if (stat) n["stat"] = stat;
+      return n;
+    };
+    doc["summary"]["buoy_x"] = quantity("position_x", nullptr);
+    doc["summary"]["buoy_z"] = quantity("position_z", nullptr);
+    doc["summary"]["buoy_speed_max"] = quantity("speed", "max");
+    doc["summary"]["anchor_tension_max"] = quantity("end_tension", "max");
+  }
+  if (!top.find("figure")) {
+    for (const char* q : {"position_x", "position_z", "speed"}) {
+      YAML::Node n;
+      n["quantity"] = q;
+      n["node"] = "cable.end";
+      doc["figure"]["series"].push_back(n);
+    }
+    YAML::Node tension;
+    tension["quantity"] = "tension_end";
+    tension["element"] = 1;
+    tension["end"] = 1;
+    doc["figure"]["series"].push_back(tension);
+  }
+  if (steps) {
+    doc["steps"] = *steps;
+  } else {
+    // The hold: viscous relaxation (Appendix C) from the straight line, with a damping constant
+    // of a hundredth of the line's axial stiffness EA / L, reduced by each step's change.
+    YAML::Node relax;
+    relax["name"] = "held";
+    relax["tolerance"] = "1e-6";
+    relax["damping"] = number(0.01 * *ea / *length);
+    relax["initial_damping_factor"] = "0.01";
+    if (const YAML::Node* r = top.find("relax"))
+      for (const auto& kv : *r) relax[kv.first.Scalar()] = kv.second;
+    YAML::Node released;
+    released["name"] = "released";
+    for (const auto& kv : *dynamic) released[kv.first.Scalar()] = kv.second;
+    YAML::Node let_go;
+    let_go["node"] = "cable.end";
+    let_go["dofs"] = flowSequence({"x", "z"});
+    released["release"].push_back(let_go);
+    YAML::Node relax_step, dynamic_step;
+    relax_step["relax"] = relax;
+    dynamic_step["dynamic"] = released;
+    doc["steps"].push_back(relax_step);
+    doc["steps"].push_back(dynamic_step);
+  }
+  return doc;
+}
+
+YAML::Node expandScenario(Diagnostics& diag, const YAML::Node& root) {
+  if (!root.IsMap() || !root["scenario"]) return root;
+  const YAML::Node s = root["scenario"];
+  if (s.IsScalar() && s.Scalar() == "single_point_moor") return expandSinglePointMoor(diag, root);
+  diag.error(s, "scenario: unknown (got " + describeNode(s) + ", expected single_point_moor)");
+  return root;
+}
+
+}  // namespace flexmoor::app
