@@ -220,12 +220,12 @@ std::vector<Eigen::MatrixXd> Assembler::elementMasses(element::MassKind kind) co
 void Assembler::inertiaForce(const std::vector<Eigen::MatrixXd>& masses, const State& state,
                              Eigen::VectorXd& force) const {
   force.setZero(3 * model_.nodeCount());
-  Eigen::VectorXd a;
+  Eigen::VectorXd a, f;
   for (int e = 0; e < model_.elementCount(); ++e) {
     const auto& index = full_index_[e];
     a.resize(index.size());
     for (size_t k = 0; k < index.size(); ++k) a(k) = state.acceleration.data()[index[k]];
-    const Eigen::VectorXd f = masses[e] * a;
+    f.noalias() = masses[e] * a;
     for (size_t k = 0; k < index.size(); ++k) force(index[k]) += f(k);
   }
 }
@@ -282,12 +282,17 @@ void Assembler::applyPrescribed(State& state) const {
 void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scratch,
                                element::ElementResult& r) const {
   const element::Element& element = model_.element(e);
+  if (!scratch.checked) {
+    scratch.internal_memo = sameDisplacement(internal_memo_, state);
+    scratch.external_memo = sameState(external_memo_, state);
+    scratch.checked = true;
+  }
   Eigen::VectorXd& f = scratch.force;
-  if (sameDisplacement(internal_memo_, state))
+  if (scratch.internal_memo)
     f = internal_memo_.elements[e];
   else
     element.internalForce(context(state, e), f, nullptr);
-  if (sameState(external_memo_, state)) {
+  if (scratch.external_memo) {
     if (external_memo_.per_element) f -= external_memo_.elements[e];
   } else {
     Eigen::VectorXd& p = scratch.load;
@@ -301,7 +306,8 @@ void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scrat
   if (!a.isZero(0.0)) {
     if (consistent_masses_.empty())
       consistent_masses_ = elementMasses(element::MassKind::Consistent);
-    f += consistent_masses_[e] * a;
+    scratch.inertia.noalias() = consistent_masses_[e] * a;
+    f += scratch.inertia;
   }
   const std::vector<int>& nodes = element.nodes();
   const int last = static_cast<int>(nodes.size()) - 1;

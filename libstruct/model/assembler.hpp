@@ -72,8 +72,11 @@ class Assembler {
   double pressureFactor(const PressureLoad& load, const State& state) const;
   // Element e's own share of the proportional loads (gravity, line loads) at the load factor.
   void elementLoad(const State& state, int e, Eigen::VectorXd& load) const;
+  // Work space of one sweep over the elements at one state, and whether the memos below hold
+  // that state's forces (asked once a sweep).
   struct EndForceScratch {
-    Eigen::VectorXd force, load, acceleration;
+    Eigen::VectorXd force, load, acceleration, inertia;
+    bool checked = false, internal_memo = false, external_memo = false;
   };
   void setEndTensions(const State& state, int e, EndForceScratch& scratch,
                       element::ElementResult& r) const;
