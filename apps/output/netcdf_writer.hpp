@@ -33,10 +33,11 @@
 #include "apps/case/case.hpp"
 #include "apps/output/netcdf_file.hpp"
 #include "apps/output/result_frame.hpp"
+#include "apps/output/result_sink.hpp"
 
 namespace flexmoor::app {
 
-class NetcdfWriter {
+class NetcdfWriter final : public ResultSink {
  public:
   // Creates (or replaces) `path` and writes the header and the mesh of `model`; the global
   // attributes and units come from `c`. Throws std::runtime_error naming the path and the netCDF
@@ -48,10 +49,10 @@ class NetcdfWriter {
   // of the record, when the frame does not match the model or the point layout of the first
   // frame, when a value is NaN or infinite (naming the variable and its indices), or when the
   // step name is longer than name_strlen.
-  void write(const ResultFrame& frame);
+  void write(const ResultFrame& frame) override;
 
   // Flushes every record written so far to disk now.
-  void flush() { file_.flush(); }
+  void flush() override { file_.flush(); }
 
   size_t records() const { return records_; }
   const std::string& path() const { return file_.path(); }

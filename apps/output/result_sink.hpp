@@ -1,0 +1,17 @@
+#pragma once
+// Where a run's records go (simulation.hpp): the netCDF writer, an in-memory collector, later a
+// host code's callback.
+#include "apps/output/result_frame.hpp"
+
+namespace flexmoor::app {
+
+class ResultSink {
+ public:
+  virtual ~ResultSink() = default;
+  // One record; `frame.state` is valid during the call only.
+  virtual void write(const ResultFrame& frame) = 0;
+  // At the end of every step and of the run: whatever the sink buffers is made to last.
+  virtual void flush() {}
+};
+
+}  // namespace flexmoor::app
