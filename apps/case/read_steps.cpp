@@ -350,7 +350,8 @@ void readStep(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   const MapEntry& e = entries[0];
   StepSpec step;
   step.kind = found->second;
-  step.where = {b.diag.file(), lineOf(e.key_node)};
+  // A step a scenario wrote has no place of its own: the map it was made from has one.
+  step.where = {b.diag.file(), lineOf(e.key_node) > 0 ? lineOf(e.key_node) : lineOf(e.value)};
   Fields f(b.diag, e.value, childPath(path, e.key), keysOf(step.kind));
   switch (step.kind) {
     case StepSpec::Kind::Relax:

@@ -279,9 +279,9 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
     relax["initial_damping_factor"] = "0.01";
     if (const YAML::Node* r = top.find("relax"))
       for (const auto& kv : *r) relax[kv.first.Scalar()] = kv.second;
-    YAML::Node released;
+    // The case's own map, so that its place in the file names the step in messages.
+    YAML::Node released = *dynamic;
     released["name"] = "released";
-    for (const auto& kv : *dynamic) released[kv.first.Scalar()] = kv.second;
     YAML::Node let_go;
     let_go["node"] = "cable.end";
     let_go["dofs"] = flowSequence({"x", "z"});
