@@ -1,12 +1,15 @@
 // The sea of a case's ocean sections (hydro_spec.hpp) and its loads on the model: Morison loads on
 // the cable elements of sections with hydro: (one load per length measure in use), the bodies'
-// loads at their nodes, and seabed contact over the lines' hydrodynamic diameters.
+// loads at their nodes, and seabed contact over the lines' hydrodynamic diameters and the bodies'
+// projected areas.
+#include <cmath>
 #include <memory>
 
 #include "apps/case/case_builder.hpp"
 #include "libhydro/loads/body_node_load.hpp"
 #include "libhydro/loads/morison_line_load.hpp"
 #include "libhydro/seabed/seabed_line_load.hpp"
+#include "libhydro/seabed/seabed_node_load.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -66,6 +69,18 @@ void buildOcean(CaseBuilder& b) {
   for (size_t e = 0; e < hydro.size(); ++e)
     if (hydro[e]) widths[e] = hydro[e]->coefficients.diameter;
   b.model.addLineLoad(std::make_shared<hydro::SeabedLineLoad>(h.bed, h.contact, std::move(widths)));
+  // Bodies touch the bed with their projected area from their lowest point: a sphere's disc
+  // pi D^2 / 4 from its radius below the node; a point body as a cube of its volume, V^(2/3)
+  // from half its side (a body without volume does not touch).
+  for (const BodySpec& body : h.bodies) {
+    const hydro::PointBody& p = body.body;
+    const double side = std::cbrt(p.volume);
+    const double area = p.diameter > 0.0 ? M_PI * p.diameter * p.diameter / 4.0 : side * side;
+    const double offset = p.diameter > 0.0 ? 0.5 * p.diameter : 0.5 * side;
+    if (area > 0.0)
+      b.model.addNodeLoad(
+          std::make_shared<hydro::SeabedNodeLoad>(body.node, h.bed, h.contact, area, offset));
+  }
 }
 
 }  // namespace flexmoor::app
