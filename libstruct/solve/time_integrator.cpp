@@ -66,8 +66,8 @@ bool TimeIntegrator::loadMatricesWanted(int iteration) const {
 // Effective tangent (Eq. 4.63): (1 + alpha) (K_T + K_d + K_L) + gamma / (beta h) (1 + alpha)
 // (C + C_d + C_L) + a0 (M + (1 + alpha) M_L), with C = a_M M + a_K K0, the internal damping's
 // dF_d/du = K_d and dF_d/du' = C_d, and the motion loads' stiffness K_L, damping C_L and added
-// mass M_L. Everything is assembled on the assembler's one pattern, so the
-// sum is taken coefficient by coefficient, without a sparse merge or an allocation.
+// mass M_L. Everything is assembled on the assembler's one pattern, so the sum is taken
+// coefficient by coefficient, without a sparse merge or an allocation.
 void TimeIntegrator::factorEffectiveTangent(double h) {
   const double a0 = 1.0 / (beta_ * h * h);
   const double c = (1.0 + alpha_) * gamma_ / (beta_ * h);
