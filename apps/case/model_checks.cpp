@@ -362,15 +362,22 @@ void checkSeabed(CaseBuilder& b) {
   if (more > 0) b.diag.error(0, "and " + std::to_string(more) + " more nodes below the seabed");
 }
 
-// Morison loads act on cable elements along their axis; a hoop ring has none.
+// Morison loads and axial damping act on cable elements along their axis; a hoop ring has none.
 void checkHydroSections(CaseBuilder& b) {
   for (int e = 0; e < b.model.elementCount(); ++e) {
     const std::string& section = b.element_origin[e].section;
-    if (b.element_types[e] != "hoop_cable" || section.empty() || !b.sections.at(section)->hydro)
-      continue;
-    b.diag.error(b.element_origin[e].line,
-                 elementName(b, e) + ": Morison loads act on lines only (got section '" + section +
-                     "' with hydro: on a hoop ring, expected a section without hydro:)");
+    if (b.element_types[e] != "hoop_cable" || section.empty() || !b.sections.at(section)) continue;
+    const SectionSpec& spec = *b.sections.at(section);
+    if (spec.hydro)
+      b.diag.error(b.element_origin[e].line,
+                   elementName(b, e) + ": Morison loads act on lines only (got section '" +
+                       section +
+                       "' with hydro: on a hoop ring, expected a section without hydro:)");
+    if (spec.section.axial_damping > 0.0 || spec.section.damping_ratio > 0.0)
+      b.diag.error(b.element_origin[e].line,
+                   elementName(b, e) + ": axial damping acts on lines only (got section '" +
+                       section +
+                       "' with damping: on a hoop ring, expected a section without damping:)");
   }
 }
 

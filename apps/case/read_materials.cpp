@@ -68,11 +68,43 @@ MaterialLaws readMaterial(CaseBuilder& b, const MapEntry& e) {
           std::make_shared<material::MooneyRivlinMembrane>(*C1, *C2)};  // Eq. 2.42
 }
 
+// A cable section's `damping:`, axial Kelvin-Voigt damping (axial_damping.hpp): `BA:` in N*s, or
+// `zeta:`, MoorDyn's negative BA input, turned into BA per element by the element from its length.
+bool readLineDamping(CaseBuilder& b, const YAML::Node& n, const std::string& path,
+                     element::CableSection& section) {
+  Fields f(b.diag, n, path, {"BA", "zeta"});
+  const YAML::Node* ba = f.find("BA");
+  const YAML::Node* zeta = f.find("zeta");
+  if (!f.isMap()) return false;
+  if (ba && zeta) {
+    b.diag.error(*zeta, path + ": give either BA (N*s) or zeta (MoorDyn's negative BA), not both");
+    return false;
+  }
+  if (!ba && !zeta) {
+    b.diag.error(n, path + ": missing key 'BA' (a coefficient in N*s) or 'zeta' (a damping ratio)");
+    return false;
+  }
+  const YAML::Node& value = ba ? *ba : *zeta;
+  const std::string key = ba ? "BA" : "zeta";
+  const auto v = b.in.quantity(value, f.path(key), ba ? kind::kAxialDamping : kind::kNumber);
+  if (!v) return false;
+  if (*v < 0.0) {
+    b.diag.error(value, f.path(key) + ": out of range (got " + value.Scalar() + ", expected >= 0" +
+                            (ba ? "; MoorDyn's negative BA, a damping ratio, is given as "
+                                  "damping: {zeta: ...}"
+                                : "") +
+                            ")");
+    return false;
+  }
+  (ba ? section.axial_damping : section.damping_ratio) = *v;
+  return true;
+}
+
 // A cable section (`area:`) or a membrane section (`thickness:`, its material needing a membrane
 // law).
 std::optional<SectionSpec> readSection(CaseBuilder& b, const MapEntry& e) {
   Fields f(b.diag, e.value, childPath("sections", e.key),
-           {"material", "area", "thickness", "density", "quadrature", "hydro"});
+           {"material", "area", "thickness", "density", "quadrature", "hydro", "damping"});
   SectionSpec s;
   const YAML::Node* area = f.find("area");
   const YAML::Node* thickness = f.find("thickness");
@@ -126,7 +158,24 @@ std::optional<SectionSpec> readSection(CaseBuilder& b, const MapEntry& e) {
       hydro_ok = s.hydro.has_value();
     }
   }
-  if (!material_ok || !size || s.quadrature < 0 || !hydro_ok) return std::nullopt;
+  bool damping_ok = true;
+  if (const YAML::Node* d = f.find("damping")) {
+    if (s.is_membrane) {
+      b.diag.error(*d, f.path("damping") +
+                           ": axial damping acts on lines only (got damping: on a membrane "
+                           "section with thickness, expected it on a cable section with area)");
+      damping_ok = false;
+    } else {
+      damping_ok = readLineDamping(b, *d, f.path("damping"), s.section);
+      if (damping_ok && s.section.damping_ratio > 0.0 && !(density > 0.0)) {
+        b.diag.error(*d, f.path("damping.zeta") +
+                             ": needs the line's mass (got density 0, expected a section "
+                             "density > 0: BA = zeta l sqrt(EA m))");
+        damping_ok = false;
+      }
+    }
+  }
+  if (!material_ok || !size || s.quadrature < 0 || !hydro_ok || !damping_ok) return std::nullopt;
   return s;
 }
 

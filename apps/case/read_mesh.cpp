@@ -196,9 +196,11 @@ std::unique_ptr<element::Element> readSpring(CaseBuilder& b, Fields& f) {
   if (const YAML::Node* c = f.find("compression"))
     compression =
         b.in.choice(*c, f.path("compression"), compressionChoices()).value_or(compression);
+  // A dashpot in parallel (N*s/m), its force c dl/dt along the spring.
+  const double damping = b.in.quantityOr(f, "damping", kind::kDashpot, Limit::NonNegative, 0.0);
   if (!nodes || !stiffness) return nullptr;
   return std::make_unique<element::SpringElement>((*nodes)[0], (*nodes)[1], *stiffness, rest,
-                                                  compression);
+                                                  compression, damping);
 }
 
 std::unique_ptr<element::Element> readPointMass(CaseBuilder& b, Fields& f) {
@@ -215,12 +217,13 @@ std::unique_ptr<element::Element> readPointMass(CaseBuilder& b, Fields& f) {
 void readElement(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   const std::string type = peekText(item, "type");
   const std::vector<std::string> cable = {"type", "nodes", "section"};
-  const std::vector<std::string> spring = {"type", "nodes", "stiffness", "rest_length",
-                                           "compression"};
+  const std::vector<std::string> spring = {"type",        "nodes",       "stiffness",
+                                           "rest_length", "compression", "damping"};
   const std::vector<std::string> point_mass = {"type", "node", "mass"};
   const std::vector<std::string> hoop = {"type", "node", "section"};
-  const std::vector<std::string> any = {"type",        "nodes",       "section", "stiffness",
-                                        "rest_length", "compression", "node",    "mass"};
+  const std::vector<std::string> any = {"type",      "nodes",       "section",
+                                        "stiffness", "rest_length", "compression",
+                                        "node",      "mass",        "damping"};
   const bool on_nodes = type == "cable" || type == "membrane" || type == "axisymmetric_membrane";
   Fields f(b.diag, item, path,
            on_nodes               ? cable

@@ -82,13 +82,14 @@ constexpr BaseUnit kBaseUnits[] = {
 };
 
 constexpr QuantityKind kNamedKinds[] = {
-    kind::kLength,     kind::kArea,
-    kind::kMass,       kind::kTime,
-    kind::kForce,      kind::kPressure,
-    kind::kDensity,    kind::kAcceleration,
-    kind::kStiffness,  kind::kVolume,
-    kind::kVelocity,   kind::kBedStiffness,
-    kind::kBedDamping, {"a frequency", {0, 0, -1}},
+    kind::kLength,       kind::kArea,
+    kind::kMass,         kind::kTime,
+    kind::kForce,        kind::kPressure,
+    kind::kDensity,      kind::kAcceleration,
+    kind::kStiffness,    kind::kVolume,
+    kind::kVelocity,     kind::kBedStiffness,
+    kind::kBedDamping,   {"a frequency", {0, 0, -1}},
+    kind::kAxialDamping, kind::kDashpot,
 };
 
 std::string baseUnitList() {

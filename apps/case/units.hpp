@@ -49,6 +49,10 @@ inline constexpr QuantityKind kVelocity{"a velocity", {0, 1, -1}};
 // A seabed's penalty stiffness and damping per projected area (MoorDyn's kBot and cBot).
 inline constexpr QuantityKind kBedStiffness{"a pressure per length (like Pa/m)", {1, -2, -2}};
 inline constexpr QuantityKind kBedDamping{"a pressure per velocity (like Pa s/m)", {1, -2, -1}};
+// A line's axial Kelvin-Voigt coefficient, force per unit strain rate (MoorDyn's BA).
+inline constexpr QuantityKind kAxialDamping{"a force times a time (like N*s)", {1, 1, -1}};
+// A dashpot's coefficient, force per velocity.
+inline constexpr QuantityKind kDashpot{"a force per velocity (like N*s/m)", {1, 0, -1}};
 }  // namespace kind
 
 // A malformed value or unit expression, or a unit of the wrong dimension.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "libstruct/element/axial_damping.hpp"
 #include "libstruct/element/nodal_mass.hpp"
 #include "libstruct/element/reference_jacobian.hpp"
 #include "libstruct/shape/gauss_legendre.hpp"
@@ -33,6 +34,56 @@ void CableElement<N>::gather(const ElementContext& c, Coordinates& X, Coordinate
     const int n = nodes()[I];
     X.col(I) = c.reference.col(n);
     Y.col(I) = X.col(I) + c.state.displacement.col(n);
+  }
+}
+
+template <int N>
+void CableElement<N>::gatherVelocity(const ElementContext& c, Coordinates& V) const {
+  for (int I = 0; I < N; ++I) V.col(I) = c.state.velocity.col(nodes()[I]);
+}
+
+template <int N>
+double CableElement<N>::axialDamping(const Coordinates& X) const {
+  if (section_.damping_ratio <= 0.0) return section_.axial_damping;
+  double length = 0.0;  // unstretched, int |x,1| dxi
+  const auto& rule = shape::gaussLegendre(quadrature_points_);
+  for (int q = 0; q < rule.size(); ++q)
+    length += (X * shape::Lagrange1D<N>::derivatives(rule.points[q])).norm() * rule.weights[q];
+  const double EA = section_.material->initialModulus() * section_.area;
+  return dampingCoefficientOfRatio(section_.damping_ratio, length / (N - 1), EA,
+                                   section_.density * section_.area);
+}
+
+template <int N>
+bool CableElement<N>::hasDamping() const {
+  return section_.axial_damping > 0.0 || section_.damping_ratio > 0.0;
+}
+
+// axial_damping.hpp: f_I = int BA d(lambda)/dt L^I,1 t dxi = int (BA / |x,1|) L^I,1 p dxi.
+template <int N>
+void CableElement<N>::dampingForce(const ElementContext& c, Eigen::VectorXd& f,
+                                   LoadMatrices* J) const {
+  using L = shape::Lagrange1D<N>;
+  f.setZero(3 * N);
+  if (J) J->setZero(3 * N);
+  if (!hasDamping()) return;
+  Coordinates X, Y, V;
+  gather(c, X, Y);
+  gatherVelocity(c, V);
+  const double BA = axialDamping(X);
+  const auto& rule = shape::gaussLegendre(quadrature_points_);
+  for (int q = 0; q < rule.size(); ++q) {
+    const typename L::Vector dL = L::derivatives(rule.points[q]);
+    const double weight = BA * rule.weights[q] / (X * dL).norm();
+    const AxialRate p = axialRate(Y * dL, V * dL);
+    for (int I = 0; I < N; ++I) f.template segment<3>(3 * I) += (weight * dL(I)) * p.value;
+    if (!J) continue;
+    for (int I = 0; I < N; ++I)
+      for (int K = 0; K < N; ++K) {
+        const double w = weight * dL(I) * dL(K);
+        J->stiffness.template block<3, 3>(3 * I, 3 * K) += w * p.d_position;
+        J->damping.template block<3, 3>(3 * I, 3 * K) += w * p.d_velocity;
+      }
   }
 }
 
@@ -151,20 +202,28 @@ void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
 }
 
 template <int N>
-double CableElement<N>::axialForce(const Coordinates& X, const Coordinates& Y, double xi) const {
+double CableElement<N>::axialForce(const Coordinates& X, const Coordinates& Y, const Coordinates& V,
+                                   double BA, double xi) const {
   const typename shape::Lagrange1D<N>::Vector dL = shape::Lagrange1D<N>::derivatives(xi);
-  return section_.material->tension((X * dL).squaredNorm(), (Y * dL).squaredNorm(), section_.area);
+  const Vector3d x1 = X * dL, y1 = Y * dL;
+  const double elastic =
+      section_.material->tension(x1.squaredNorm(), y1.squaredNorm(), section_.area);
+  if (BA == 0.0) return elastic;
+  return elastic + BA * y1.dot(V * dL) / (x1.norm() * y1.norm());  // axial_damping.hpp
 }
 
 template <int N>
 ElementResult CableElement<N>::result(const ElementContext& c) const {
-  Coordinates X, Y;
+  Coordinates X, Y, V;
   gather(c, X, Y);
+  gatherVelocity(c, V);
+  const double BA = hasDamping() ? axialDamping(X) : 0.0;
   ElementResult r;
   const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q) r.point_tension.push_back(axialForce(X, Y, rule.points[q]));
-  r.end_tension[0] = axialForce(X, Y, -1.0);
-  r.end_tension[1] = axialForce(X, Y, 1.0);
+  for (int q = 0; q < rule.size(); ++q)
+    r.point_tension.push_back(axialForce(X, Y, V, BA, rule.points[q]));
+  r.end_tension[0] = axialForce(X, Y, V, BA, -1.0);
+  r.end_tension[1] = axialForce(X, Y, V, BA, 1.0);
   return r;
 }
 

@@ -12,6 +12,11 @@ struct CableSection {
   double area = 0.0;     // A0, reference cross-section
   double density = 0.0;  // rho0, mass per unit reference volume
   std::shared_ptr<const material::CableMaterial> material;
+  // Axial Kelvin-Voigt damping (axial_damping.hpp): BA in N s, or, when damping_ratio > 0,
+  // MoorDyn's negative input zeta, converted per element with its node spacing as the segment
+  // length. At most one of them is non-zero.
+  double axial_damping = 0.0;
+  double damping_ratio = 0.0;
 };
 
 template <int N>
@@ -29,6 +34,9 @@ class CableElement final : public Element {
                 Eigen::VectorXd& p) const override;
   void lineLoad(const ElementContext& c, const model::LineLoad& load, Eigen::VectorXd& p,
                 LoadMatrices* J) const override;
+  bool hasDamping() const override;
+  void dampingForce(const ElementContext& c, Eigen::VectorXd& f, LoadMatrices* J) const override;
+  // Axial force at the integration points and the ends, the viscous part BA d(lambda)/dt included.
   ElementResult result(const ElementContext& c) const override;
   // At the integration points and at the ends, where the end tensions are evaluated.
   double minRelativeJacobian(const model::NodalField& X) const override;
@@ -38,7 +46,11 @@ class CableElement final : public Element {
  private:
   using Coordinates = Eigen::Matrix<double, 3, N>;
   void gather(const ElementContext& c, Coordinates& X, Coordinates& Y) const;
-  double axialForce(const Coordinates& X, const Coordinates& Y, double xi) const;
+  void gatherVelocity(const ElementContext& c, Coordinates& V) const;
+  // BA of the element (N s): the section's, or its damping ratio's at this element's segment.
+  double axialDamping(const Coordinates& X) const;
+  double axialForce(const Coordinates& X, const Coordinates& Y, const Coordinates& V, double BA,
+                    double xi) const;
 
   CableSection section_;
   int quadrature_points_;

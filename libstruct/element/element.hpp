@@ -73,6 +73,15 @@ class Element {
     f.setZero(dofCount());
     if (dfdu) dfdu->setZero(dofCount(), dofCount());
   }
+  // Internal damping (a line's axial Kelvin-Voigt term): the viscous internal force f_d(u, u'),
+  // zero at rest, on the same side as internalForce; when J is given, also J.stiffness = df_d/du
+  // and J.damping = df_d/du' (J.mass zero): the matrices of the load -f_d. Elements without
+  // internal damping (hasDamping() false) add nothing.
+  virtual bool hasDamping() const { return false; }
+  virtual void dampingForce(const ElementContext&, Eigen::VectorXd& f, LoadMatrices* J) const {
+    f.setZero(dofCount());
+    if (J) J->setZero(dofCount());
+  }
   virtual ElementResult result(const ElementContext& c) const = 0;
   // The smallest Jacobian of the map from natural coordinates to the reference geometry X over
   // the element's integration points, relative to a regular element of its size

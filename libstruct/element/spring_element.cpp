@@ -1,15 +1,18 @@
 #include "libstruct/element/spring_element.hpp"
 
+#include "libstruct/element/axial_damping.hpp"
+
 namespace flexmoor::element {
 
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
 SpringElement::SpringElement(int node_a, int node_b, double stiffness, double rest_length,
-                             material::Compression compression)
+                             material::Compression compression, double damping)
     : Element({node_a, node_b}),
       stiffness_(stiffness),
       rest_length_(rest_length),
+      damping_(damping),
       compression_(compression) {}
 
 double SpringElement::restLength(const ElementContext& c) const {
@@ -40,6 +43,27 @@ void SpringElement::internalForce(const ElementContext& c, Eigen::VectorXd& f,
   K->bottomLeftCorner<3, 3>() = -k;
 }
 
+// f_b = -f_a = c e e^T (y2' - y1'): axial_damping.hpp's p with y,1 = y2 - y1, v,1 = y2' - y1'.
+void SpringElement::dampingForce(const ElementContext& c, Eigen::VectorXd& f,
+                                 LoadMatrices* J) const {
+  f.setZero(6);
+  if (J) J->setZero(6);
+  if (!hasDamping()) return;
+  const int a = nodes()[0], b = nodes()[1];
+  const Vector3d chord = c.reference.col(b) + c.state.displacement.col(b) - c.reference.col(a) -
+                         c.state.displacement.col(a);
+  const AxialRate p = axialRate(chord, c.state.velocity.col(b) - c.state.velocity.col(a));
+  f.head<3>() = -damping_ * p.value;
+  f.tail<3>() = damping_ * p.value;
+  if (!J) return;
+  for (int I = 0; I < 2; ++I)
+    for (int K = 0; K < 2; ++K) {
+      const double sign = I == K ? damping_ : -damping_;
+      J->stiffness.block<3, 3>(3 * I, 3 * K) = sign * p.d_position;
+      J->damping.block<3, 3>(3 * I, 3 * K) = sign * p.d_velocity;
+    }
+}
+
 void SpringElement::mass(const ElementContext&, MassKind, Eigen::MatrixXd& M) const {
   M.setZero(6, 6);
 }
@@ -49,8 +73,10 @@ void SpringElement::bodyLoad(const ElementContext&, const Vector3d&, Eigen::Vect
 }
 
 ElementResult SpringElement::result(const ElementContext& c) const {
-  Eigen::VectorXd f;
+  Eigen::VectorXd f, viscous;
   internalForce(c, f, nullptr);
+  dampingForce(c, viscous, nullptr);
+  f += viscous;
   ElementResult r;
   const Vector3d chord = c.reference.col(nodes()[1]) + c.state.displacement.col(nodes()[1]) -
                          c.reference.col(nodes()[0]) - c.state.displacement.col(nodes()[0]);

@@ -37,6 +37,9 @@ class CableMaterial {
   // Axial force in the deformed cable for a reference cross-section A0: N = S lambda A0.
   double tension(double a11, double A11, double A0) const;
 
+  // The modulus at the unstretched length, dS/dlambda at lambda = 1 (E; 6 (C1 + C2) for
+  // Mooney-Rivlin): the axial stiffness EA of a section is this times its area.
+  double initialModulus() const { return law(1.0).dSdStretch; }
   Compression compression() const { return compression_; }
   virtual std::string name() const = 0;
 

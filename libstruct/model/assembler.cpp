@@ -59,6 +59,8 @@ Assembler::Assembler(const Model& model) : model_(model) {
     slot_.push_back(blockSlots(pattern_, equations[e]));
   for (const auto& load : model.nodeLoads())
     node_slot_.push_back(blockSlots(pattern_, node_equations(load->node())));
+  for (int e = 0; e < model.elementCount(); ++e)
+    if (model.element(e).hasDamping()) damped_.push_back(e);
 }
 
 template <class ElementMatrix>
@@ -193,6 +195,25 @@ void Assembler::loadMatrices(const State& state, LoadMatrices& J) const {
   }
 }
 
+void Assembler::dampingForce(const State& state, Eigen::VectorXd& force, LoadMatrices* J) const {
+  force.setZero(3 * model_.nodeCount());
+  if (J)
+    for (SparseMatrix* m : {&J->stiffness, &J->damping, &J->mass}) {
+      *m = pattern_;
+      m->coeffs().setZero();
+    }
+  Eigen::VectorXd f;
+  element::LoadMatrices k;
+  for (int e : damped_) {
+    model_.element(e).dampingForce(context(state, e), f, J ? &k : nullptr);
+    const auto& index = full_index_[e];
+    for (size_t a = 0; a < index.size(); ++a) force(index[a]) += f(a);
+    if (!J) continue;
+    scatterMatrix(slot_[e], k.stiffness, J->stiffness);
+    scatterMatrix(slot_[e], k.damping, J->damping);
+  }
+}
+
 double Assembler::pressureFactor(const PressureLoad& load, const State& state) const {
   return load.pressure * (load.history ? load.history->value(state.time) : state.load_factor);
 }
@@ -271,14 +292,14 @@ void Assembler::applyPrescribed(State& state) const {
 
 // A line element (cable or spring: two ends, axial forces, no membrane resultants) reports at
 // each end the force its end node exerts on it, from its own nodal force balance: internal force
-// f, minus its consistent external load p (gravity, line loads), plus its inertia M u'' when the
-// structure accelerates (Rayleigh damping, a property of the whole model, is left out). That is
-// the force on the end point a mooring user reads (a fairlead's, an anchor's), and at a support
-// that only this element joins it is the reaction. Its magnitude is the end tension; a force that
-// pushes the end towards the element's next node is a compression and is reported negative. The
-// axial force from the strain at xi = +-1 converges more slowly and can be far off when EA / T is
-// large (a curved quadratic element cannot keep its stretch uniform); the integration points keep
-// their strain-based tension.
+// f and its internal damping f_d, minus its consistent external load p (gravity, line loads), plus
+// its inertia M u'' when the structure accelerates (Rayleigh damping, a property of the whole
+// model, is left out). That is the force on the end point a mooring user reads (a fairlead's, an
+// anchor's), and at a support that only this element joins it is the reaction. Its magnitude is
+// the end tension; a force that pushes the end towards the element's next node is a compression
+// and is reported negative. The axial force from the strain at xi = +-1 converges more slowly and
+// can be far off when EA / T is large (a curved quadratic element cannot keep its stretch
+// uniform); the integration points keep their strain-based tension.
 void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scratch,
                                element::ElementResult& r) const {
   const element::Element& element = model_.element(e);
@@ -298,6 +319,10 @@ void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scrat
     Eigen::VectorXd& p = scratch.load;
     elementLoad(state, e, p);
     f -= p;
+  }
+  if (element.hasDamping()) {
+    element.dampingForce(context(state, e), scratch.damping, nullptr);
+    f += scratch.damping;
   }
   const auto& index = full_index_[e];
   Eigen::VectorXd& a = scratch.acceleration;
@@ -330,10 +355,13 @@ NodalField Assembler::reactions(const State& state) const {
                                         : (internalForce(state, F, nullptr), F);
   const Eigen::VectorXd& external =
       sameState(external_memo_, state) ? external_memo_.assembled : (externalLoad(state, P), P);
+  Eigen::VectorXd viscous = Eigen::VectorXd::Zero(internal.size());
+  if (hasDamping()) dampingForce(state, viscous, nullptr);
   NodalField r = NodalField::Zero(3, model_.nodeCount());
   for (int n = 0; n < model_.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k)
-      if (model_.isConstrained(n, k)) r(k, n) = internal(3 * n + k) - external(3 * n + k);
+      if (model_.isConstrained(n, k))
+        r(k, n) = internal(3 * n + k) + viscous(3 * n + k) - external(3 * n + k);
   return r;
 }
 

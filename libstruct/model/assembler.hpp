@@ -32,6 +32,12 @@ class Assembler {
   // The motion-dependent loads' matrices at the state (zero when the model has none). Loads that
   // are not stiff() add nothing.
   void loadMatrices(const State& state, LoadMatrices& J) const;
+  // Whether an element has internal damping (a line's axial Kelvin-Voigt term, BA).
+  bool hasDamping() const { return !damped_.empty(); }
+  // The elements' viscous internal forces F_d(u, u') as a full vector (zero at rest, on the side
+  // of F); with J, also J.stiffness = dF_d/du and J.damping = dF_d/du' on the free dofs (J.mass
+  // zero), on the assembler's pattern: the matrices of the load -F_d.
+  void dampingForce(const State& state, Eigen::VectorXd& force, LoadMatrices* J) const;
   // Subtracts the follower-pressure load stiffness dP/du from K (K - dP/du: non-symmetric).
   void subtractLoadStiffness(const State& state, SparseMatrix& K) const;
   // Element mass matrices (Eq. 4.40, 4.49), in element order. They depend on the reference
@@ -58,7 +64,7 @@ class Assembler {
   // Element e's result alone (0-based), as elementResults gives it: what a quantity of one
   // element needs in every time step.
   element::ElementResult elementResult(const State& state, int e) const;
-  // Support reactions F - P at the constrained dofs (inertia not included), zero elsewhere.
+  // Support reactions F + F_d - P at the constrained dofs (inertia not included), zero elsewhere.
   NodalField reactions(const State& state) const;
 
  private:
@@ -75,7 +81,7 @@ class Assembler {
   // Work space of one sweep over the elements at one state, and whether the memos below hold
   // that state's forces (asked once a sweep).
   struct EndForceScratch {
-    Eigen::VectorXd force, load, acceleration, inertia;
+    Eigen::VectorXd force, load, acceleration, inertia, damping;
     bool checked = false, internal_memo = false, external_memo = false;
   };
   void setEndTensions(const State& state, int e, EndForceScratch& scratch,
@@ -103,6 +109,7 @@ class Assembler {
   std::vector<std::vector<int>> full_index_;  // per element: full index of each local dof
   std::vector<std::vector<int>> slot_;        // per element: value slot of each (a, b), or -1
   std::vector<std::vector<int>> node_slot_;   // per node load: slot of each (a, b) of its node
+  std::vector<int> damped_;                   // the elements with internal damping
   // Consistent element masses for the end-force balance, computed on first use (total
   // Lagrangian: they depend on the reference configuration only).
   mutable std::vector<Eigen::MatrixXd> consistent_masses_;

@@ -32,8 +32,9 @@ TimeIntegrator::TimeIntegrator(const model::Assembler& assembler, const DynamicO
       alpha_(options.hht_alpha),
       motion_loads_(assembler.model().hasMotionLoads() &&
                     options.load_matrices != DynamicOptions::LoadMatrixUpdate::Off),
-      linear_(motion_loads_ || options.pressure_load_stiffness ? MatrixKind::Unsymmetric
-                                                               : MatrixKind::Symmetric) {
+      linear_(motion_loads_ || options.pressure_load_stiffness || assembler.hasDamping()
+                  ? MatrixKind::Unsymmetric
+                  : MatrixKind::Symmetric) {
   if (alpha_ != 0.0) {
     gamma_ = 0.5 - alpha_;
     beta_ = 0.25 * (1.0 - alpha_) * (1.0 - alpha_);
@@ -50,21 +51,31 @@ VectorXd TimeIntegrator::damping(const VectorXd& v_free) const {
   return f;
 }
 
+VectorXd TimeIntegrator::viscousForce(const model::State& s) const {
+  if (!assembler_.hasDamping()) return VectorXd::Zero(model_.equationCount());
+  VectorXd f;
+  assembler_.dampingForce(s, f, nullptr);
+  return assembler_.restrictToFree(f);
+}
+
 bool TimeIntegrator::loadMatricesWanted(int iteration) const {
   if (!motion_loads_) return false;
   return o_.load_matrices == DynamicOptions::LoadMatrixUpdate::Iteration || iteration == 0;
 }
 
-// Effective tangent (Eq. 4.63): (1 + alpha) (K_T + K_L) + gamma / (beta h) ((1 + alpha) C + ...)
-// + a0 (M + (1 + alpha) M_L), with C = a_M M + a_K K0 and the motion loads' stiffness K_L,
-// damping C_L and added mass M_L. Everything is assembled on the assembler's one pattern, so the
-// sum is taken coefficient by coefficient, without a sparse merge or an allocation.
+// Effective tangent (Eq. 4.63): (1 + alpha) (K_T + K_d + K_L) + gamma / (beta h) (1 + alpha)
+// (C + C_d + C_L) + a0 (M + (1 + alpha) M_L), with C = a_M M + a_K K0, the internal damping's
+// dF_d/du = K_d and dF_d/du' = C_d, and the motion loads' stiffness K_L, damping C_L and added
+// mass M_L. Everything is assembled on the assembler's one pattern, so the sum is taken
+// coefficient by coefficient, without a sparse merge or an allocation.
 void TimeIntegrator::factorEffectiveTangent(double h) {
   const double a0 = 1.0 / (beta_ * h * h);
   const double c = (1.0 + alpha_) * gamma_ / (beta_ * h);
   Keff_ = K_;
   Keff_.coeffs() = (1.0 + alpha_) * K_.coeffs() + (a0 + c * o_.rayleigh_mass) * M_.coeffs();
   if (o_.rayleigh_stiffness != 0.0) Keff_.coeffs() += (c * o_.rayleigh_stiffness) * K0_.coeffs();
+  if (assembler_.hasDamping())
+    Keff_.coeffs() += (1.0 + alpha_) * viscous_.stiffness.coeffs() + c * viscous_.damping.coeffs();
   if (motion_loads_)
     Keff_.coeffs() += (1.0 + alpha_) * loads_.stiffness.coeffs() + c * loads_.damping.coeffs() +
                       ((1.0 + alpha_) * a0) * loads_.mass.coeffs();
@@ -98,8 +109,9 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
     VectorXd F;
     assembler_.internalForce(s, F, &K0_);
   }
-  VectorXd previous_balance;  // HHT: P_n - F_n - C v_n
-  if (alpha_ != 0.0) previous_balance = outOfBalance(assembler_, s, nullptr).free - damping(v_n);
+  VectorXd previous_balance;  // HHT: P_n - F_n - F_d,n - C v_n
+  if (alpha_ != 0.0)
+    previous_balance = outOfBalance(assembler_, s, nullptr).free - damping(v_n) - viscousForce(s);
 
   model::State next = s;
   next.time = s.time + h;
@@ -119,10 +131,16 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
     const bool update = o_.flavour == NewtonFlavour::Full ? true : (it == 0 && refresh_each_step);
     Residual R = outOfBalance(assembler_, next, update ? &K_ : nullptr);
     if (update && o_.pressure_load_stiffness) assembler_.subtractLoadStiffness(next, K_);
+    if (update && assembler_.hasDamping()) {
+      // From the step's start at the first iteration, as the motion loads' matrices below: the
+      // predictor's u' = -u'_n is far from the motion, and K_d depends on it.
+      VectorXd unused;
+      assembler_.dampingForce(it == 0 ? s : next, unused, &viscous_);
+    }
     VectorXd inertia_full;
     assembler_.inertiaForce(masses_, next, inertia_full);
     const VectorXd inertia = assembler_.restrictToFree(inertia_full);
-    R.free = (1.0 + alpha_) * (R.free - damping(v)) - inertia;  // Eq. 4.63
+    R.free = (1.0 + alpha_) * (R.free - damping(v) - viscousForce(next)) - inertia;  // Eq. 4.63
     if (alpha_ != 0.0) R.free -= alpha_ * previous_balance;
     // The forces pass through zero twice a period, so the residual is measured against the
     // largest force seen in the run, not the instantaneous one (round-off would stall Newton).
@@ -222,9 +240,10 @@ void TimeIntegrator::drive(int node, int component, double displacement, double 
   targets_[{node, component}] = Target{0.0, 0.0, displacement, velocity, 0.0, 0.0};
 }
 
-// u'' at the start from equilibrium: (M + M_L) a = P - F - C v - M_p a_p on the free dofs, with
-// P taken at zero free acceleration, M_L the motion loads' added mass and M_p a_p the inertia of
-// the prescribed supports' accelerations; zero if the mass is singular.
+// u'' at the start from equilibrium: (M + M_L) a = P - F - F_d - C v - M_p a_p on the free dofs,
+// with P taken at zero free acceleration, F_d the internal damping, M_L the motion loads' added
+// mass and M_p a_p the inertia of the prescribed supports' accelerations; zero if the mass is
+// singular.
 void TimeIntegrator::initialAcceleration(model::State& s) {
   assembler_.applyPrescribed(s);
   setFree(model_, VectorXd::Zero(model_.equationCount()), s.acceleration);
@@ -232,7 +251,7 @@ void TimeIntegrator::initialAcceleration(model::State& s) {
   assembler_.inertiaForce(masses_, s, inertia_full);  // prescribed accelerations only
   const VectorXd rhs = outOfBalance(assembler_, s, nullptr).free -
                        assembler_.restrictToFree(inertia_full) -
-                       damping(assembler_.restrictToFree(asVector(s.velocity)));
+                       damping(assembler_.restrictToFree(asVector(s.velocity))) - viscousForce(s);
   model::SparseMatrix mass = M_;
   if (model_.hasMotionLoads()) {
     assembler_.loadMatrices(s, loads_);

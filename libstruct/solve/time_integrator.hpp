@@ -68,6 +68,8 @@ class TimeIntegrator {
   void applySupports(model::State& next, const model::State& previous, double h) const;
   void initialAcceleration(model::State& s);
   Eigen::VectorXd damping(const Eigen::VectorXd& v_free) const;
+  // The elements' internal damping force F_d on the free dofs at `s` (zero without any).
+  Eigen::VectorXd viscousForce(const model::State& s) const;
   bool loadMatricesWanted(int iteration) const;
   void factorEffectiveTangent(double h);
   model::MotionRecord record(const model::State& s) const;
@@ -81,6 +83,7 @@ class TimeIntegrator {
   std::vector<Eigen::MatrixXd> masses_;    // element mass matrices, constant
   model::SparseMatrix M_, K_, K0_, Keff_;  // on the assembler's pattern
   model::LoadMatrices loads_;              // the motion loads' matrices at their last update
+  model::LoadMatrices viscous_;            // dF_d/du, dF_d/du' of internal damping, with K_
   LinearSolver linear_;
   std::map<std::pair<int, int>, Target> targets_;  // driven dofs of the step under way
   DynamicReport report_;

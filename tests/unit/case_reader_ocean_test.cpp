@@ -9,6 +9,7 @@
 
 #include "apps/case/case_reader.hpp"
 #include "libhydro/loads/body_node_load.hpp"
+#include "libhydro/seabed/seabed_node_load.hpp"
 #include "libhydro/seabed/seabed_line_load.hpp"
 #include "libhydro/waves/dispersion.hpp"
 #include "libhydro/waves/sea.hpp"
@@ -68,7 +69,9 @@ TEST(CaseReaderOcean, ConvertsWaterWavesAndDefaultsIntoTheCaseUnits) {
   const model::Model& m = *c.model;
   ASSERT_EQ(m.elementCount(), 5);
   EXPECT_EQ(m.element(4).typeName(), "point_mass");
-  ASSERT_EQ(m.nodeLoads().size(), 1u);
+  // The body's water load, and (the case has seabed:) its contact with the bed.
+  ASSERT_EQ(m.nodeLoads().size(), 2u);
+  EXPECT_NE(dynamic_cast<const hydro::SeabedNodeLoad*>(m.nodeLoads()[1].get()), nullptr);
   const auto* body = dynamic_cast<const hydro::BodyNodeLoad*>(m.nodeLoads()[0].get());
   ASSERT_NE(body, nullptr);
   EXPECT_EQ(body->node(), 4);                                         // the last of 5 nodes
