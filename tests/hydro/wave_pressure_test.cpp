@@ -135,6 +135,31 @@ TEST(WavePressure, AxisymmetricSurfaceLoadStiffnessMatchesFiniteDifference) {
   }
 }
 
+// The pressure at single points under a crest (t = 0 at x = -phase / k: eta = a = 1 m), water on
+// the positive side: -p. Below the mean level the linear pressure; between the mean level and
+// the crest, constant extrapolation of the dynamic part gives rho g (eta - z), zero at the
+// surface; above it zero, with a zero gradient. Reference: those closed forms; tolerance 1e-12
+// relative to rho g a (exact arithmetic of the same terms).
+TEST(WavePressure, PressureIsZeroAboveTheSurfaceAndHydrostaticBelowTheCrest) {
+  const double rho = kSeaWaterDensity, g = kStandardGravity, h = 30.0;
+  const auto sea = linearWaveSea(h);
+  const hydro::WaveComponent& w = sea->components()[0];
+  const hydro::IncidentPressureLoad load(sea, hydro::WaterSide::Positive);
+  model::LoadPoint p;
+  const double x = -w.phase / w.k, scale = rho * g * w.amplitude;
+  const auto at = [&](double z) {
+    p.position = Vector3d(x, 2.0, z);
+    return load.evaluate(p, true);
+  };
+  EXPECT_NEAR(at(0.4).pressure, -rho * g * (w.amplitude - 0.4), 1e-12 * scale);
+  EXPECT_NEAR(at(-3.0).pressure,
+              -(rho * g * 3.0 + scale * std::cosh(w.k * (h - 3.0)) / std::cosh(w.k * h)),
+              1e-12 * scale);
+  const model::PointPressure dry = at(1.2);
+  EXPECT_EQ(dry.pressure, 0.0);
+  EXPECT_EQ(dry.d_position.norm(), 0.0);
+}
+
 // A structured mesh of Q8 elements on the map `at` of the unit square (s, t in [0, 1]), nx by
 // ny, nodes shared; returns the element indices.
 std::vector<int> q8Grid(model::Model& m, int nx, int ny,
