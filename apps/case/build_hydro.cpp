@@ -1,13 +1,14 @@
 // The sea of a case's ocean sections (hydro_spec.hpp) and its loads on the model: Morison loads on
 // the cable elements of sections with hydro: (one load per length measure in use), the bodies'
-// loads at their nodes, and seabed contact over the lines' hydrodynamic diameters and the bodies'
-// projected areas.
+// loads at their nodes, the incident wave pressure on membranes, and seabed contact over the
+// lines' hydrodynamic diameters and the bodies' projected areas.
 #include <cmath>
 #include <memory>
 
 #include "apps/case/case_builder.hpp"
 #include "libhydro/loads/body_node_load.hpp"
 #include "libhydro/loads/morison_line_load.hpp"
+#include "libhydro/loads/wave_pressure_load.hpp"
 #include "libhydro/seabed/seabed_line_load.hpp"
 #include "libhydro/seabed/seabed_node_load.hpp"
 
@@ -64,6 +65,8 @@ void buildOcean(CaseBuilder& b) {
   addMorisonLoads(b, sea, hydro);
   for (const BodySpec& body : h.bodies)
     b.model.addNodeLoad(std::make_shared<hydro::BodyNodeLoad>(body.node, body.body, sea));
+  for (const WavePressureSpec& w : h.wave_pressures)
+    b.model.addSurfaceLoad(std::make_shared<hydro::IncidentPressureLoad>(sea, w.side), w.elements);
   if (!h.has_contact) return;
   std::vector<double> widths(hydro.size(), 0.0);
   for (size_t e = 0; e < hydro.size(); ++e)

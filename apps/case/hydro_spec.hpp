@@ -1,6 +1,7 @@
 #pragma once
 // The ocean sections of a case file as read (read_hydro.cpp), in the case's unit system:
-// `water:`, `waves:`, `current:`, `seabed:`, `bodies:` and a section's `hydro:`. build_hydro.cpp
+// `water:`, `waves:`, `current:`, `seabed:`, `bodies:`, a section's `hydro:` and
+// `loads: wave_pressure:`. build_hydro.cpp
 // turns them into a hydro::Sea and the loads that put it on the model.
 #include <optional>
 #include <string>
@@ -8,6 +9,7 @@
 
 #include "libhydro/loads/morison.hpp"
 #include "libhydro/loads/point_body.hpp"
+#include "libhydro/loads/wave_pressure_load.hpp"
 #include "libhydro/seabed/bathymetry.hpp"
 #include "libhydro/seabed/seabed_contact.hpp"
 #include "libhydro/water/current_profile.hpp"
@@ -40,6 +42,14 @@ struct BodySpec {
   std::string where;  // "bodies[2]"
 };
 
+// One item of `loads: wave_pressure:`: the incident wave pressure on these membranes.
+struct WavePressureSpec {
+  std::vector<int> elements;
+  hydro::WaterSide side = hydro::WaterSide::Positive;
+  int line = 0;
+  std::string where;  // "loads.wave_pressure[0]"
+};
+
 struct HydroSpec {
   bool has_water = false;  // `water:` given: nothing else of the ocean applies without it
   int water_line = 0;
@@ -54,6 +64,7 @@ struct HydroSpec {
   bool has_contact = false;
   hydro::SeabedProperties contact;
   std::vector<BodySpec> bodies;
+  std::vector<WavePressureSpec> wave_pressures;  // read with loads: (read_conditions.cpp)
 };
 
 }  // namespace flexmoor::app

@@ -96,6 +96,30 @@ void readNodalLoad(CaseBuilder& b, const YAML::Node& item, const std::string& pa
   for (int node : *nodes) b.model.addNodalLoad(node, *force, history);
 }
 
+// The membranes of the surfaces that `on:` names (one surface or a list); nullopt when a name is
+// unknown (reported) or broken.
+std::optional<std::vector<int>> surfaceMembranes(CaseBuilder& b, const YAML::Node& on,
+                                                 const std::string& path) {
+  std::vector<int> elements;
+  bool ok = true;
+  const std::vector<YAML::Node> names = listOrOne(b.diag, on, path);
+  for (size_t i = 0; i < names.size(); ++i) {
+    const std::string where = listOrOnePath(on, path, i);
+    const auto name = b.in.text(names[i], where);
+    const auto set = name ? b.c.element_sets.find(*name) : b.c.element_sets.end();
+    if (name && set == b.c.element_sets.end() && !b.broken_node_names.count(*name))
+      b.diag.error(names[i], where + ": unknown surface (got '" + *name + "', expected " +
+                                 nameList(b.c.element_sets) + ")");
+    ok = ok && set != b.c.element_sets.end();
+    if (set == b.c.element_sets.end()) continue;
+    for (int e : set->second)  // the membranes only, not the surface's cables
+      if (b.element_types[e] == "membrane" || b.element_types[e] == "axisymmetric_membrane")
+        elements.push_back(e);
+  }
+  if (!ok) return std::nullopt;
+  return elements;
+}
+
 // A follower pressure (Eq. 3.30-3.37) on the membranes of surfaces: `on: SURFACE` or a list of
 // surfaces, acting along the surface normal (s-direction x t-direction of its parameters).
 void readPressure(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
@@ -104,26 +128,26 @@ void readPressure(CaseBuilder& b, const YAML::Node& item, const std::string& pat
   const YAML::Node* p = f.require("pressure");
   const auto pressure = p ? b.in.quantity(*p, f.path("pressure"), kind::kPressure) : std::nullopt;
   const auto [history_ok, history] = optionalHistory(b, f);
-  std::vector<int> elements;
-  bool ok = on != nullptr;
-  if (on) {
-    const std::vector<YAML::Node> names = listOrOne(b.diag, *on, f.path("on"));
-    for (size_t i = 0; i < names.size(); ++i) {
-      const std::string where = listOrOnePath(*on, f.path("on"), i);
-      const auto name = b.in.text(names[i], where);
-      const auto set = name ? b.c.element_sets.find(*name) : b.c.element_sets.end();
-      if (name && set == b.c.element_sets.end() && !b.broken_node_names.count(*name))
-        b.diag.error(names[i], where + ": unknown surface (got '" + *name + "', expected " +
-                                   nameList(b.c.element_sets) + ")");
-      ok = ok && set != b.c.element_sets.end();
-      if (set == b.c.element_sets.end()) continue;
-      for (int e : set->second)  // the membranes only, not the surface's cables
-        if (b.element_types[e] == "membrane" || b.element_types[e] == "axisymmetric_membrane")
-          elements.push_back(e);
-    }
-  }
-  if (!ok || !pressure || !history_ok) return;
-  b.model.addPressure({elements, *pressure, history});
+  const auto elements = on ? surfaceMembranes(b, *on, f.path("on")) : std::nullopt;
+  if (!elements || !pressure || !history_ok) return;
+  b.model.addPressure({*elements, *pressure, history});
+}
+
+// The incident wave pressure of the sea on the membranes of surfaces (built with the ocean,
+// build_hydro.cpp): `on:` as for a pressure, and `water_side:` positive (the side the surface
+// normal s x t points to: outside a body whose normals point out) or negative.
+void readWavePressure(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
+  Fields f(b.diag, item, path, {"on", "water_side"});
+  const YAML::Node* on = f.require("on");
+  const YAML::Node* side_node = f.require("water_side");
+  const auto side = side_node
+                        ? b.in.choice<hydro::WaterSide>(*side_node, f.path("water_side"),
+                                                        {{"positive", hydro::WaterSide::Positive},
+                                                         {"negative", hydro::WaterSide::Negative}})
+                        : std::nullopt;
+  const auto elements = on ? surfaceMembranes(b, *on, f.path("on")) : std::nullopt;
+  if (!elements || !side) return;
+  b.hydro.wave_pressures.push_back({*elements, *side, lineOf(item), path});
 }
 
 // gravity: [gx, gy, gz], or {g: G} for (0, 0, -G).
@@ -171,7 +195,7 @@ void readSupports(CaseBuilder& b, const YAML::Node& n) {
 }
 
 void readLoads(CaseBuilder& b, const YAML::Node& n) {
-  Fields f(b.diag, n, "loads", {"gravity", "nodal", "pressure"});
+  Fields f(b.diag, n, "loads", {"gravity", "nodal", "pressure", "wave_pressure"});
   if (const YAML::Node* g = f.find("gravity")) readGravity(b, *g, f.path("gravity"));
   if (const YAML::Node* nodal = f.find("nodal")) {
     const std::vector<YAML::Node> items = listItems(b.diag, *nodal, f.path("nodal"));
@@ -182,6 +206,11 @@ void readLoads(CaseBuilder& b, const YAML::Node& n) {
     const std::vector<YAML::Node> items = listItems(b.diag, *pressure, f.path("pressure"));
     for (size_t i = 0; i < items.size(); ++i)
       readPressure(b, items[i], itemPath(f.path("pressure"), i));
+  }
+  if (const YAML::Node* wave = f.find("wave_pressure")) {
+    const std::vector<YAML::Node> items = listItems(b.diag, *wave, f.path("wave_pressure"));
+    for (size_t i = 0; i < items.size(); ++i)
+      readWavePressure(b, items[i], itemPath(f.path("wave_pressure"), i));
   }
 }
 

@@ -392,6 +392,7 @@ void readOcean(CaseBuilder& b, const Fields& top) {
       if (top.find(key)) refuseWithoutWater(b, top.keyLine(key), key);
     for (const auto& [name, s] : b.sections)
       if (s && s->hydro) refuseWithoutWater(b, s->hydro->line, "sections." + name + ".hydro");
+    for (const WavePressureSpec& w : h.wave_pressures) refuseWithoutWater(b, w.line, w.where);
     return;
   }
   if (const YAML::Node* n = top.find("waves")) readWaves(b, *n, h);

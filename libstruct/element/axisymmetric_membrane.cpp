@@ -111,11 +111,16 @@ void AxisymmetricMembrane<N>::bodyLoad(const ElementContext& c, const Vector3d& 
 }
 
 template <int N>
-void AxisymmetricMembrane<N>::pressureLoad(const ElementContext& c, double pressure,
-                                           Eigen::VectorXd& f, Eigen::MatrixXd* dfdu) const {
+void AxisymmetricMembrane<N>::followerPressure(const ElementContext& c,
+                                               const PressureField& pressure, Eigen::VectorXd& f,
+                                               Eigen::MatrixXd* dfdu) const {
   using L = shape::Lagrange1D<N>;
-  Coordinates X, Y;
+  Coordinates X, Y, V, A;
   gather(c, X, Y);
+  for (int I = 0; I < N; ++I) {
+    V.col(I) = c.state.velocity.col(nodes()[I]);
+    A.col(I) = c.state.acceleration.col(nodes()[I]);
+  }
   f.setZero(3 * N);
   if (dfdu) dfdu->setZero(3 * N, 3 * N);
   const auto& rule = shape::gaussLegendre(quadrature_points_);
@@ -124,18 +129,28 @@ void AxisymmetricMembrane<N>::pressureLoad(const ElementContext& c, double press
     const typename L::Vector dL = L::derivatives(rule.points[q]);
     const Vector3d t = Y * dL;
     const double rho = Y.row(0).dot(Lv);
-    const double w = pressure * rule.weights[q];
+    model::LoadPoint point;
+    point.position = Y * Lv;
+    point.velocity = V * Lv;
+    point.acceleration = A * Lv;
+    point.time = c.state.time;
+    point.element = c.index;
+    const model::PointPressure p = pressure(point, dfdu != nullptr);
+    const double w = p.pressure * rule.weights[q];
     // Eq. 3.37 per radian: n = y,theta x y,xi = rho (t_z, 0, -t_r): the pressure pushes to the
     // right of the meridian (outwards for a meridian that runs up the axis)
     const Vector3d n(rho * t.z(), 0.0, -rho * t.x());
     for (int I = 0; I < N; ++I) f.template segment<3>(3 * I) += (w * Lv(I)) * n;
     if (!dfdu) continue;
+    // dn/du^J, and the gradient part dp/du^J = L^J (dp/dy)^T
+    const Matrix3d n_grad = rule.weights[q] * (n * p.d_position.transpose());
     for (int J = 0; J < N; ++J) {
       Matrix3d dn = Matrix3d::Zero();
       dn(0, 0) = Lv(J) * t.z();
       dn(0, 2) = rho * dL(J);
       dn(2, 0) = -Lv(J) * t.x() - rho * dL(J);
-      for (int I = 0; I < N; ++I) dfdu->template block<3, 3>(3 * I, 3 * J) += (w * Lv(I)) * dn;
+      dn = w * dn + Lv(J) * n_grad;
+      for (int I = 0; I < N; ++I) dfdu->template block<3, 3>(3 * I, 3 * J) += Lv(I) * dn;
     }
   }
 }

@@ -21,8 +21,10 @@ class AxisymmetricMembrane final : public Element {
   void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
   void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
                 Eigen::VectorXd& p) const override;
-  void pressureLoad(const ElementContext& c, double p, Eigen::VectorXd& f,
-                    Eigen::MatrixXd* dfdu) const override;
+  // Per radian; a field is evaluated on the meridian (theta = 0, the x-z plane), which is right
+  // for a field that is axisymmetric about the z axis (hydrostatic pressure).
+  void followerPressure(const ElementContext& c, const PressureField& pressure, Eigen::VectorXd& f,
+                        Eigen::MatrixXd* dfdu) const override;
   ElementResult result(const ElementContext& c) const override;
   // The meridian's, and the radius r / D at each integration point (the hoop metric is r^2).
   double minRelativeJacobian(const model::NodalField& X) const override;

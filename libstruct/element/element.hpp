@@ -3,6 +3,7 @@
 // tangent stiffness, mass and body load, all in the element's 3n dofs ordered node by node
 // (x, y, z of its first node, then of its second, ...).
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -66,10 +67,15 @@ class Element {
     p.setZero(dofCount());
     if (J) J->setZero(dofCount());
   }
-  // Follower pressure p on the deformed surface (Eq. 3.30-3.37): nodal forces f and, when dfdu is
-  // given, the load stiffness df/du (non-symmetric). Elements that are not surfaces add nothing.
-  virtual void pressureLoad(const ElementContext&, double, Eigen::VectorXd& f,
-                            Eigen::MatrixXd* dfdu) const {
+  // A pressure field on the deformed surface (Eq. 3.30-3.37 with p = p(y, t)), acting along the
+  // current normal: the PointPressure at each integration point on the current configuration.
+  using PressureField = std::function<model::PointPressure(const model::LoadPoint&, bool)>;
+  // The follower-pressure kernel of surface elements: nodal forces
+  // f = int p(y) M^I (y,1 x y,2) dxi1 dxi2 and, when dfdu is given, the load stiffness df/du
+  // (non-symmetric): the constant-pressure part plus the gradient part int M^I n (dp/dy)^T M^J.
+  // Elements that are not surfaces add nothing.
+  virtual void followerPressure(const ElementContext&, const PressureField&, Eigen::VectorXd& f,
+                                Eigen::MatrixXd* dfdu) const {
     f.setZero(dofCount());
     if (dfdu) dfdu->setZero(dofCount(), dofCount());
   }
@@ -81,6 +87,28 @@ class Element {
   virtual void dampingForce(const ElementContext&, Eigen::VectorXd& f, LoadMatrices* J) const {
     f.setZero(dofCount());
     if (J) J->setZero(dofCount());
+  }
+  // A uniform follower pressure p: nodal forces f and, when dfdu is given, df/du.
+  void pressureLoad(const ElementContext& c, double p, Eigen::VectorXd& f,
+                    Eigen::MatrixXd* dfdu) const {
+    followerPressure(
+        c,
+        [p](const model::LoadPoint&, bool) {
+          return model::PointPressure{p, {0.0, 0.0, 0.0}};
+        },
+        f, dfdu);
+  }
+  // A surface load's nodal forces f and, when J is given, its matrices: stiffness -df/du
+  // (damping and mass zero: the pressure does not depend on the motion's rates).
+  void surfaceLoad(const ElementContext& c, const model::SurfaceLoad& load, Eigen::VectorXd& f,
+                   LoadMatrices* J) const {
+    const auto field = [&load](const model::LoadPoint& p, bool jacobians) {
+      return load.evaluate(p, jacobians);
+    };
+    if (!J) return followerPressure(c, field, f, nullptr);
+    J->setZero(dofCount());
+    followerPressure(c, field, f, &J->stiffness);
+    J->stiffness = -J->stiffness;
   }
   virtual ElementResult result(const ElementContext& c) const = 0;
   // The smallest Jacobian of the map from natural coordinates to the reference geometry X over

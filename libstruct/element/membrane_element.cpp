@@ -122,10 +122,15 @@ void MembraneElement<Shape>::bodyLoad(const ElementContext& c, const Vector3d& g
 }
 
 template <class Shape>
-void MembraneElement<Shape>::pressureLoad(const ElementContext& c, double pressure,
-                                          Eigen::VectorXd& f, Eigen::MatrixXd* dfdu) const {
-  Coordinates X, Y;
+void MembraneElement<Shape>::followerPressure(const ElementContext& c,
+                                              const PressureField& pressure, Eigen::VectorXd& f,
+                                              Eigen::MatrixXd* dfdu) const {
+  Coordinates X, Y, V, A;
   gather(c, X, Y);
+  for (int I = 0; I < N; ++I) {
+    V.col(I) = c.state.velocity.col(nodes()[I]);
+    A.col(I) = c.state.acceleration.col(nodes()[I]);
+  }
   f.setZero(3 * N);
   if (dfdu) dfdu->setZero(3 * N, 3 * N);
   for (int q = 0; q < rule_.size(); ++q) {
@@ -133,16 +138,25 @@ void MembraneElement<Shape>::pressureLoad(const ElementContext& c, double pressu
     const typename Shape::Values Mv = Shape::values(pt.x(), pt.y());
     const typename Shape::Derivatives dM = Shape::derivatives(pt.x(), pt.y());
     const Eigen::Matrix<double, 3, 2> y = Y * dM;
-    const double w = pressure * rule_.weights[q];
+    model::LoadPoint point;
+    point.position = Y * Mv;
+    point.velocity = V * Mv;
+    point.acceleration = A * Mv;
+    point.time = c.state.time;
+    point.element = c.index;
+    const model::PointPressure p = pressure(point, dfdu != nullptr);
+    const double w = p.pressure * rule_.weights[q];
     // Eq. 3.37: P^I = int p M^I (y,1 x y,2) dxi1 dxi2 (the cross product carries the area)
     const Vector3d n = y.col(0).cross(y.col(1));
     for (int I = 0; I < N; ++I) f.template segment<3>(3 * I) += (w * Mv(I)) * n;
     if (!dfdu) continue;
-    // d(y,1 x y,2)/du^J = M^J,1 (-[y,2]x) + M^J,2 [y,1]x, i.e. dn = dy,1 x y,2 + y,1 x dy,2
+    // d(y,1 x y,2)/du^J = M^J,1 (-[y,2]x) + M^J,2 [y,1]x, i.e. dn = dy,1 x y,2 + y,1 x dy,2;
+    // the gradient part: dp/du^J = M^J (dp/dy)^T
     const Matrix3d S1 = skew(y.col(0)), S2 = skew(y.col(1));
+    const Matrix3d n_grad = rule_.weights[q] * (n * p.d_position.transpose());
     for (int J = 0; J < N; ++J) {
-      const Matrix3d dn = -dM(J, 0) * S2 + dM(J, 1) * S1;
-      for (int I = 0; I < N; ++I) dfdu->template block<3, 3>(3 * I, 3 * J) += (w * Mv(I)) * dn;
+      const Matrix3d dn = w * (-dM(J, 0) * S2 + dM(J, 1) * S1) + Mv(J) * n_grad;
+      for (int I = 0; I < N; ++I) dfdu->template block<3, 3>(3 * I, 3 * J) += Mv(I) * dn;
     }
   }
 }

@@ -28,8 +28,8 @@ class MembraneElement final : public Element {
   void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
   void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
                 Eigen::VectorXd& p) const override;
-  void pressureLoad(const ElementContext& c, double p, Eigen::VectorXd& f,
-                    Eigen::MatrixXd* dfdu) const override;
+  void followerPressure(const ElementContext& c, const PressureField& pressure, Eigen::VectorXd& f,
+                        Eigen::MatrixXd* dfdu) const override;
   ElementResult result(const ElementContext& c) const override;
   double minRelativeJacobian(const model::NodalField& X) const override;
 

@@ -149,6 +149,12 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
       for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
     }
   }
+  for (const SurfaceLoadOn& surface : model_.surfaceLoads())
+    for (int e : surface.elements) {
+      model_.element(e).surfaceLoad(context(state, e), *surface.load, p, nullptr);
+      const auto& index = full_index_[e];
+      for (size_t a = 0; a < index.size(); ++a) load(index[a]) += state.load_factor * p(a);
+    }
   memo.valid = true;
   memo.displacement = state.displacement;
   memo.velocity = state.velocity;
@@ -183,6 +189,13 @@ void Assembler::loadMatrices(const State& state, LoadMatrices& J) const {
       scatterMatrix(slot_[e], (lambda * k.stiffness).eval(), J.stiffness);
       scatterMatrix(slot_[e], (lambda * k.damping).eval(), J.damping);
       scatterMatrix(slot_[e], (lambda * k.mass).eval(), J.mass);
+    }
+  }
+  for (const SurfaceLoadOn& surface : model_.surfaceLoads()) {
+    if (!surface.load->stiff()) continue;
+    for (int e : surface.elements) {
+      model_.element(e).surfaceLoad(context(state, e), *surface.load, p, &k);
+      scatterMatrix(slot_[e], (lambda * k.stiffness).eval(), J.stiffness);
     }
   }
   const auto& node_loads = model_.nodeLoads();

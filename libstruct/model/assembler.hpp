@@ -11,8 +11,8 @@ namespace flexmoor::model {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-// The negative derivatives of the motion-dependent loads (line and node loads) on the free dofs,
-// on the assembler's pattern: stiffness -dP/du, damping -dP/du', mass -dP/du''.
+// The negative derivatives of the motion-dependent loads (line, surface and node loads) on the
+// free dofs, on the assembler's pattern: stiffness -dP/du, damping -dP/du', mass -dP/du''.
 struct LoadMatrices {
   SparseMatrix stiffness, damping, mass;
 };
@@ -27,7 +27,8 @@ class Assembler {
 
   // Internal force F(u) as a full vector; with K, also the tangent on the free dofs (Eq. 4.48).
   void internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const;
-  // External load P at the state's load factor: nodal loads, gravity, line and node loads.
+  // External load P at the state's load factor: nodal loads, gravity, line, surface and node
+  // loads, follower pressures.
   void externalLoad(const State& state, Eigen::VectorXd& load) const;
   // The motion-dependent loads' matrices at the state (zero when the model has none). Loads that
   // are not stiff() add nothing.

@@ -1,8 +1,9 @@
 #pragma once
-// The load-point interface: how anything outside libstruct (libhydro's Morison loads, buoys and
-// seabed, a wind model, a test) puts a load that depends on the motion on the structure. An
-// element evaluates a line load at its integration points on the current configuration, a node
-// load at its node; the load returns its force and the force's derivatives, which the element
+// The load-point interface: how anything outside libstruct (libhydro's Morison loads, buoys,
+// seabed and wave pressure, a wind model, a test) puts a load that depends on the motion on the
+// structure. An element evaluates a line load at its integration points on the current
+// configuration, a surface load (a pressure field) at its surface integration points, a node
+// load at its node; the load returns its value and derivatives, which the element
 // integrates (N^T f, N^T J N) and the assembler adds to the residual and to the stiffness,
 // damping and mass of the one sparsity pattern, as Project Chrono's ChLoad does (K = -dQ/dx,
 // R = -dQ/dv, M = -dQ/da). libstruct never includes a libhydro header.
@@ -20,7 +21,7 @@ struct LoadPoint {
   Eigen::Vector3d tangent = Eigen::Vector3d::Zero();
   double stretch = 1.0;  // line points: current length / reference length
   double time = 0.0;
-  int element = -1;  // line points: the element's index in the model
+  int element = -1;  // line and surface points: the element's index in the model
   int node = -1;     // node points: the node's index
 };
 
@@ -56,6 +57,26 @@ class NodeLoad {
   virtual ~NodeLoad() = default;
   virtual int node() const = 0;
   virtual PointForce evaluate(const LoadPoint& p, bool jacobians) const = 0;
+  virtual bool stiff() const { return true; }
+};
+
+// A pressure at a surface point and its gradient in the point's position. It acts along the
+// current normal y,1 x y,2 of the deformed surface, the follower pressure's convention (Eq. 3.37):
+// a positive pressure pushes the surface towards the side its normal points to.
+struct PointPressure {
+  double pressure = 0.0;
+  Eigen::Vector3d d_position = Eigen::Vector3d::Zero();  // dp/dy
+};
+
+// A pressure field on surface elements (the incident wave pressure on a membrane), evaluated at
+// the surface's integration points on the current configuration (LoadPoint: position, velocity,
+// acceleration, time, element; tangent zero). The element integrates it along its current
+// normal and adds the load stiffness of the constant-pressure part and of the gradient.
+class SurfaceLoad {
+ public:
+  virtual ~SurfaceLoad() = default;
+  // The pressure at `p`; when `jacobians` is true, its gradient too.
+  virtual PointPressure evaluate(const LoadPoint& p, bool jacobians) const = 0;
   virtual bool stiff() const { return true; }
 };
 

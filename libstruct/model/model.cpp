@@ -57,6 +57,14 @@ void Model::addNodeLoad(std::shared_ptr<const NodeLoad> load) {
   node_loads_.push_back(std::move(load));
 }
 
+void Model::addSurfaceLoad(std::shared_ptr<const SurfaceLoad> load, std::vector<int> elements) {
+  for (int e : elements)
+    if (e < 0 || e >= elementCount())
+      throw std::out_of_range("surface load on element " + std::to_string(e) + " of " +
+                              std::to_string(elementCount()));
+  surface_loads_.push_back({std::move(load), std::move(elements)});
+}
+
 Model::Constraint Model::release(int node, int component) {
   Constraint held{prescribed_(component, node), motion_[3 * node + component]};
   constrained_(component, node) = false;

@@ -27,6 +27,13 @@ struct PressureLoad {
   std::shared_ptr<const TimeFunction> history;
 };
 
+// A pressure field (load_point.hpp's SurfaceLoad: the incident wave pressure) on surface
+// elements, along their current normal, scaled by the load factor like the other motion loads.
+struct SurfaceLoadOn {
+  std::shared_ptr<const SurfaceLoad> load;
+  std::vector<int> elements;
+};
+
 class Model {
  public:
   int addNode(const Eigen::Vector3d& reference_position);
@@ -45,6 +52,7 @@ class Model {
   // Loads that depend on the motion (load_point.hpp), scaled by the load factor like gravity.
   void addLineLoad(std::shared_ptr<const LineLoad> load) { line_loads_.push_back(std::move(load)); }
   void addNodeLoad(std::shared_ptr<const NodeLoad> load);
+  void addSurfaceLoad(std::shared_ptr<const SurfaceLoad> load, std::vector<int> elements);
   // A dof's constraint: its prescribed value and history.
   struct Constraint {
     double value = 0.0;
@@ -64,7 +72,10 @@ class Model {
   const Eigen::Vector3d& gravity() const { return gravity_; }
   const std::vector<std::shared_ptr<const LineLoad>>& lineLoads() const { return line_loads_; }
   const std::vector<std::shared_ptr<const NodeLoad>>& nodeLoads() const { return node_loads_; }
-  bool hasMotionLoads() const { return !line_loads_.empty() || !node_loads_.empty(); }
+  const std::vector<SurfaceLoadOn>& surfaceLoads() const { return surface_loads_; }
+  bool hasMotionLoads() const {
+    return !line_loads_.empty() || !node_loads_.empty() || !surface_loads_.empty();
+  }
 
   bool isConstrained(int node, int component) const { return constrained_(component, node); }
   double prescribed(int node, int component) const { return prescribed_(component, node); }
@@ -93,6 +104,7 @@ class Model {
   Eigen::Vector3d gravity_ = Eigen::Vector3d::Zero();
   std::vector<std::shared_ptr<const LineLoad>> line_loads_;
   std::vector<std::shared_ptr<const NodeLoad>> node_loads_;
+  std::vector<SurfaceLoadOn> surface_loads_;
 };
 
 }  // namespace flexmoor::model

@@ -9,12 +9,15 @@
 
 #include "apps/case/case_reader.hpp"
 #include "libhydro/loads/body_node_load.hpp"
+#include "libhydro/loads/wave_pressure_load.hpp"
 #include "libhydro/seabed/seabed_node_load.hpp"
 #include "libhydro/seabed/seabed_line_load.hpp"
 #include "libhydro/waves/dispersion.hpp"
 #include "libhydro/waves/sea.hpp"
+#include "libstruct/model/assembler.hpp"
 #include "tests/support/case_files.hpp"
 #include "tests/support/cli_run.hpp"
+#include "tests/support/ocean_models.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -209,6 +212,49 @@ summary:
   const double down = (100.0 + 7850.0 * 1e-4 * 40.0) * g;
   const double measured = test::summaryValue(test::runCaseText("tethered-buoy", text), "anchor_z");
   EXPECT_NEAR(measured, -(up - down), 1e-10 * (up - down));
+}
+
+// loads: wave_pressure: on a fixed 2 m x 0.5 m rectangle (a stay hanging from it, free along z) of Q8s 5 m down in still water (normal
+// side1 x side2 = +z), water on its positive side: one surface load on its 4 membranes (not on the
+// line's cable), and the external load at load factor 1 sums to -rho g d A e_z = -50259.08 N.
+// Reference: rho g d A by hand; tolerance 1e-12 relative (Gauss integrates a constant exactly).
+TEST(CaseReaderOcean, WavePressureOnASurfaceIsTheHydrostaticResultant) {
+  const Case c = readCase(test::writeCase("wave-pressure.yaml", R"(units: SI
+materials:
+  rubber: {type: mooney_rivlin, C1: 1 MPa, C2: 0.1 MPa}
+  steel: {type: linear_elastic, E: 2.0e11 Pa}
+sections:
+  sheet: {material: rubber, thickness: 1 mm}
+  wire: {material: steel, area: 1.0e-4 m^2}
+surfaces:
+  - {name: lid, shape: rectangle, corner: [0, 0, -5 m], side1: [2 m, 0, 0], side2: [0, 0.5 m, 0],
+     element: Q8, divisions: [2, 2], section: sheet}
+lines:
+  - {name: stay, from: [0, 0, -5 m], to: [0, 0, -6 m], elements: 1, order: 2, section: wire}
+supports:
+  - {nodes: all, fix: [x, y]}
+  - {nodes: lid, fix: [z]}
+loads:
+  wave_pressure:
+    - {on: lid, water_side: positive}
+water: {density: 1025 kg/m^3, depth: 30 m}
+steps:
+  - static: {}
+)"));
+  const model::Model& m = *c.model;
+  ASSERT_EQ(m.surfaceLoads().size(), 1u);
+  EXPECT_EQ(m.surfaceLoads()[0].elements.size(), 4u);
+  const auto* wave =
+      dynamic_cast<const hydro::IncidentPressureLoad*>(m.surfaceLoads()[0].load.get());
+  ASSERT_NE(wave, nullptr);
+  EXPECT_EQ(wave->side(), hydro::WaterSide::Positive);
+  const model::Assembler assembler(m);
+  model::State s = m.initialState();
+  s.load_factor = 1.0;
+  const Eigen::Vector3d total = test::totalExternalLoad(assembler, s);
+  const double expected = -1025.0 * 9.80665 * 5.0 * 2.0 * 0.5;
+  EXPECT_NEAR(total.z(), expected, 1e-12 * std::abs(expected));
+  EXPECT_LT(total.head<2>().norm(), 1e-12 * std::abs(expected));
 }
 
 }  // namespace

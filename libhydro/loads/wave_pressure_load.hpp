@@ -1,0 +1,39 @@
+#pragma once
+// The incident wave pressure on a membrane (hydro.md, "Wave pressure on membranes"): the gauge
+// pressure of the sea (hydrostatic -rho g z plus the dynamic linear-wave pressure, no diffraction
+// or radiation) at the deformed position of each integration point, zero above the surface, as a
+// follower load along the current normal n = y,1 x y,2 (load_point.hpp's SurfaceLoad).
+//
+// Which side the water is on: the follower-pressure convention pushes the surface along +n for a
+// positive pressure, which is water on the side n points away from (WaterSide::Negative). Water
+// on the side n points to (WaterSide::Positive: outside a closed body whose normals point out)
+// pushes along -n, so the load returns -p there.
+//
+// The gradient dp/dy is by central differences with flowGradientStep(sea) (flow_gradient.hpp);
+// within one step of the free surface the difference straddles its kink (p is continuous there,
+// its gradient is not).
+#include <memory>
+
+#include "libhydro/waves/sea.hpp"
+#include "libstruct/model/load_point.hpp"
+
+namespace flexmoor::hydro {
+
+enum class WaterSide { Positive, Negative };  // the side n = y,1 x y,2 points to, or the other
+
+class IncidentPressureLoad final : public model::SurfaceLoad {
+ public:
+  IncidentPressureLoad(std::shared_ptr<const Sea> sea, WaterSide side);
+
+  model::PointPressure evaluate(const model::LoadPoint& p, bool jacobians) const override;
+  WaterSide side() const { return side_; }
+
+ private:
+  // The gauge pressure of the incident sea at x, zero where x is dry.
+  double pressure(const Eigen::Vector3d& x, double t) const;
+
+  std::shared_ptr<const Sea> sea_;
+  WaterSide side_;
+};
+
+}  // namespace flexmoor::hydro
