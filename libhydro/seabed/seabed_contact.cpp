@@ -31,4 +31,13 @@ SeabedPointLoad seabedLoad(const SeabedProperties& bed, double delta, const Eige
   return out;
 }
 
+SeabedPointLoad seabedLoadAt(const Bathymetry& bathymetry, const SeabedProperties& bed,
+                             const Eigen::Vector3d& contact, double width,
+                             const Eigen::Vector3d& u_dot) {
+  const double x = contact.x(), y = contact.y();
+  const Eigen::Vector3d n = bathymetry.normal(x, y);
+  const double delta = n.z() * (bathymetry.height(x, y) - contact.z());
+  return seabedLoad(bed, delta, n, width, u_dot);
+}
+
 }  // namespace flexmoor::hydro

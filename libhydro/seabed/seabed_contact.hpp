@@ -10,6 +10,8 @@
 // Derivatives treat the bed as locally plane (d delta / dx = -n).
 #include <Eigen/Core>
 
+#include "libhydro/seabed/bathymetry.hpp"
+
 namespace flexmoor::hydro {
 
 struct SeabedProperties {
@@ -29,5 +31,12 @@ struct SeabedPointLoad {
 // delta: penetration along n (> 0 in contact); n: the bed's upward unit normal; width: d.
 SeabedPointLoad seabedLoad(const SeabedProperties& bed, double delta, const Eigen::Vector3d& n,
                            double width, const Eigen::Vector3d& u_dot);
+
+// The same at a point `contact` (a line's integration point, a body's lowest point) over the
+// bathymetry: the penetration along the normal of the bed's tangent plane under the point,
+// n . ((x, y, z_b) - contact) = n_z (z_b - z), exact on a plane.
+SeabedPointLoad seabedLoadAt(const Bathymetry& bathymetry, const SeabedProperties& bed,
+                             const Eigen::Vector3d& contact, double width,
+                             const Eigen::Vector3d& u_dot);
 
 }  // namespace flexmoor::hydro

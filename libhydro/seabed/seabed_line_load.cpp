@@ -13,12 +13,7 @@ model::PointForce SeabedLineLoad::evaluate(const model::LoadPoint& p, bool jacob
   if (p.element < 0 || p.element >= static_cast<int>(widths_.size())) return out;
   const double width = widths_[p.element];
   if (!(width > 0.0)) return out;
-  const double x = p.position.x(), y = p.position.y();
-  const Eigen::Vector3d n = bed_.normal(x, y);
-  // The penetration along the normal of the bed's tangent plane under the point:
-  // n . ((x, y, z_b) - y) = n_z (z_b - z), exact on a plane.
-  const double delta = n.z() * (bed_.height(x, y) - p.position.z());
-  const SeabedPointLoad s = seabedLoad(properties_, delta, n, width, p.velocity);
+  const SeabedPointLoad s = seabedLoadAt(bed_, properties_, p.position, width, p.velocity);
   out.force = s.force;
   if (!jacobians) return out;
   out.d_position = s.d_position;

@@ -10,12 +10,10 @@ SeabedNodeLoad::SeabedNodeLoad(int node, Bathymetry bed, SeabedProperties proper
 
 model::PointForce SeabedNodeLoad::evaluate(const model::LoadPoint& p, bool jacobians) const {
   model::PointForce out;
-  const double x = p.position.x(), y = p.position.y();
-  const Eigen::Vector3d n = bed_.normal(x, y);
-  // As for a line point (seabed_line_load.cpp), from the body's lowest point; the contact law
-  // per unit length over a width is, over an area, the force itself.
-  const double delta = n.z() * (bed_.height(x, y) - (p.position.z() - offset_));
-  const SeabedPointLoad s = seabedLoad(properties_, delta, n, area_, p.velocity);
+  // From the body's lowest point; the contact law per unit length over a width is, over an
+  // area, the force itself.
+  const Eigen::Vector3d lowest = p.position - offset_ * Eigen::Vector3d::UnitZ();
+  const SeabedPointLoad s = seabedLoadAt(bed_, properties_, lowest, area_, p.velocity);
   out.force = s.force;
   if (!jacobians) return out;
   out.d_position = s.d_position;

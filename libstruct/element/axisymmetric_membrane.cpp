@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "libstruct/element/interpolated_point.hpp"
 #include "libstruct/element/nodal_mass.hpp"
 #include "libstruct/element/reference_jacobian.hpp"
 #include "libstruct/shape/gauss_legendre.hpp"
@@ -129,12 +130,7 @@ void AxisymmetricMembrane<N>::followerPressure(const ElementContext& c,
     const typename L::Vector dL = L::derivatives(rule.points[q]);
     const Vector3d t = Y * dL;
     const double rho = Y.row(0).dot(Lv);
-    model::LoadPoint point;
-    point.position = Y * Lv;
-    point.velocity = V * Lv;
-    point.acceleration = A * Lv;
-    point.time = c.state.time;
-    point.element = c.index;
+    model::LoadPoint point = interpolatedPoint(c, Y, V, A, Lv);
     const model::PointPressure p = pressure(point, dfdu != nullptr);
     const double w = p.pressure * rule.weights[q];
     // Eq. 3.37 per radian: n = y,theta x y,xi = rho (t_z, 0, -t_r): the pressure pushes to the

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "libstruct/element/axial_damping.hpp"
+#include "libstruct/element/interpolated_point.hpp"
 #include "libstruct/element/nodal_mass.hpp"
 #include "libstruct/element/reference_jacobian.hpp"
 #include "libstruct/shape/gauss_legendre.hpp"
@@ -171,14 +172,9 @@ void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
     const Vector3d y1 = Y * dL;
     const double y1_norm = y1.norm();
     const double x1_norm = (X * dL).norm();
-    model::LoadPoint point;
-    point.position = Y * Lv;
-    point.velocity = V * Lv;
-    point.acceleration = A * Lv;
+    model::LoadPoint point = interpolatedPoint(c, Y, V, A, Lv);
     point.tangent = y1 / y1_norm;
     point.stretch = y1_norm / x1_norm;
-    point.time = c.state.time;
-    point.element = c.index;
     const model::PointForce f = load.evaluate(point, J != nullptr);
     // Eq. E.1, E.12: the load per length times the length element, |y,1| dxi on the deformed
     // line (the dissertation) or |x,1| dxi on the unstretched one (MoorDyn).

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "libstruct/element/interpolated_point.hpp"
 #include "libstruct/element/nodal_mass.hpp"
 #include "libstruct/element/reference_jacobian.hpp"
 #include "libstruct/shape/quad_shape.hpp"
@@ -138,12 +139,7 @@ void MembraneElement<Shape>::followerPressure(const ElementContext& c,
     const typename Shape::Values Mv = Shape::values(pt.x(), pt.y());
     const typename Shape::Derivatives dM = Shape::derivatives(pt.x(), pt.y());
     const Eigen::Matrix<double, 3, 2> y = Y * dM;
-    model::LoadPoint point;
-    point.position = Y * Mv;
-    point.velocity = V * Mv;
-    point.acceleration = A * Mv;
-    point.time = c.state.time;
-    point.element = c.index;
+    model::LoadPoint point = interpolatedPoint(c, Y, V, A, Mv);
     const model::PointPressure p = pressure(point, dfdu != nullptr);
     const double w = p.pressure * rule_.weights[q];
     // Eq. 3.37: P^I = int p M^I (y,1 x y,2) dxi1 dxi2 (the cross product carries the area)
