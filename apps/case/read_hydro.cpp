@@ -9,7 +9,6 @@
 namespace flexmoor::app {
 namespace {
 
-constexpr double kStandardGravity = 9.80665;  // m/s^2
 const double kPi = std::acos(-1.0);
 
 // Miche's limit steepness of a regular wave: H / L <= 0.142 tanh(k h) (0.142 in deep water).
@@ -39,7 +38,7 @@ std::optional<double> optional(CaseBuilder& b, const Fields& f, const std::strin
 // Gravity for the water: the magnitude of `loads: gravity`, which must point down (-z, the sea's
 // z is up); standard gravity when the case gives none.
 std::optional<double> waterGravity(CaseBuilder& b, int line) {
-  if (!b.gravity_given) return fromSi(b, kStandardGravity, kind::kAcceleration);
+  if (!b.gravity_given) return standardGravity(b.in.units);
   const Eigen::Vector3d& g = b.model.gravity();
   const bool down = g.z() < 0.0 && std::hypot(g.x(), g.y()) <= 1e-12 * g.norm();
   if (down) return g.norm();

@@ -42,11 +42,6 @@ YAML::Node flowSequence(std::initializer_list<std::string> items) {
   return n;
 }
 
-// Standard gravity in the case's system (9.80665 m/s^2 = 32.174 ft/s^2).
-double standardGravity(UnitSystem system) {
-  return 9.80665 / systemScale(kind::kAcceleration.dimension, system);
-}
-
 UnitSystem quietUnits(const YAML::Node& root) {
   const YAML::Node u = root["units"];
   return u && u.IsScalar() && u.Scalar() == "US" ? UnitSystem::US : UnitSystem::SI;

@@ -216,6 +216,10 @@ double systemScale(Dimension d, UnitSystem system) {
   return std::pow(kSlug, d.mass) * std::pow(kFoot, d.length);  // US: slug, ft, s
 }
 
+double standardGravity(UnitSystem system) {
+  return kStandardGravity / systemScale(kind::kAcceleration.dimension, system);
+}
+
 double parseValue(const std::string& text, const QuantityKind& expected, UnitSystem system) {
   const std::string t = trim(text);
   const char* first = t.data();

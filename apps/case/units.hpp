@@ -73,6 +73,9 @@ Unit parseUnit(const std::string& expression);
 // Size, in SI, of one unit of `dimension` in the case system (US: 0.3048 for a length).
 double systemScale(Dimension dimension, UnitSystem system);
 
+// Standard gravity 9.80665 m/s^2 in the case system (32.174 ft/s^2 in US units).
+double standardGravity(UnitSystem system);
+
 // Reads "NUMBER" or "NUMBER UNIT" as a value of `expected` in the case system. Throws UnitError
 // for text that is not a number, an unknown unit, or a unit of another dimension
 // ("expected a pressure, got 'ft' (a length)").

@@ -12,6 +12,7 @@
 #include "apps/case/case_reader.hpp"
 #include "apps/case/diagnostics.hpp"
 #include "apps/cli/help_text.hpp"
+#include "apps/run/draw_figure.hpp"
 #include "apps/run/run_case.hpp"
 
 namespace {
@@ -68,9 +69,7 @@ int run(const std::string& name, const RunOptions& options) {
 // xarray belong to it); returns only when the interpreter cannot be started.
 int plot(const std::string& result, const std::string& png, const std::vector<std::string>& series,
          const std::string& title) {
-  std::vector<std::string> args = {"/usr/bin/python3", FLEXMOOR_PLOT_SCRIPT, result, "-o", png};
-  for (const std::string& s : series) args.insert(args.end(), {"--series", s});
-  if (!title.empty()) args.insert(args.end(), {"--title", title});
+  std::vector<std::string> args = plotArguments(result, png, series, title);
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

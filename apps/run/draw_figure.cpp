@@ -13,17 +13,23 @@ extern char** environ;
 
 namespace flexmoor::app {
 
+std::vector<std::string> plotArguments(const std::string& netcdf, const std::string& png,
+                                       const std::vector<std::string>& series,
+                                       const std::string& title) {
+  std::vector<std::string> args = {"/usr/bin/python3", FLEXMOOR_PLOT_SCRIPT, netcdf, "-o", png};
+  for (const std::string& s : series) args.insert(args.end(), {"--series", s});
+  if (!title.empty()) args.insert(args.end(), {"--title", title});
+  return args;
+}
+
 bool drawFigure(const FigureSpec& figure, const std::string& case_title, const std::string& netcdf,
                 const std::string& png, std::ostream& diag) {
   namespace fs = std::filesystem;
   const fs::path target(png);
   const std::string temporary =
       (target.parent_path() / ("." + target.stem().string() + ".tmp.png")).string();
-  std::vector<std::string> args = {"/usr/bin/python3", FLEXMOOR_PLOT_SCRIPT, netcdf, "-o",
-                                   temporary};
-  for (const std::string& s : figure.series) args.insert(args.end(), {"--series", s});
-  const std::string title = figure.title.empty() ? case_title : figure.title;
-  if (!title.empty()) args.insert(args.end(), {"--title", title});
+  std::vector<std::string> args = plotArguments(netcdf, temporary, figure.series,
+                                                figure.title.empty() ? case_title : figure.title);
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

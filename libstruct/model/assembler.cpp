@@ -65,13 +65,13 @@ Assembler::Assembler(const Model& model) : model_(model) {
 
 template <class ElementMatrix>
 void Assembler::scatterMatrix(const std::vector<int>& slots, const ElementMatrix& k,
-                              SparseMatrix& K) const {
+                              SparseMatrix& K, double scale) const {
   double* values = K.valuePtr();
   const int m = static_cast<int>(k.rows());
   for (int b = 0; b < m; ++b)
     for (int a = 0; a < m; ++a) {
       const int s = slots[a + m * b];
-      if (s >= 0) values[s] += k(a, b);
+      if (s >= 0) values[s] += scale * k(a, b);
     }
 }
 
@@ -186,25 +186,25 @@ void Assembler::loadMatrices(const State& state, LoadMatrices& J) const {
     if (!line->stiff()) continue;
     for (int e = 0; e < model_.elementCount(); ++e) {
       model_.element(e).lineLoad(context(state, e), *line, p, &k);
-      scatterMatrix(slot_[e], (lambda * k.stiffness).eval(), J.stiffness);
-      scatterMatrix(slot_[e], (lambda * k.damping).eval(), J.damping);
-      scatterMatrix(slot_[e], (lambda * k.mass).eval(), J.mass);
+      scatterMatrix(slot_[e], k.stiffness, J.stiffness, lambda);
+      scatterMatrix(slot_[e], k.damping, J.damping, lambda);
+      scatterMatrix(slot_[e], k.mass, J.mass, lambda);
     }
   }
   for (const SurfaceLoadOn& surface : model_.surfaceLoads()) {
     if (!surface.load->stiff()) continue;
     for (int e : surface.elements) {
       model_.element(e).surfaceLoad(context(state, e), *surface.load, p, &k);
-      scatterMatrix(slot_[e], (lambda * k.stiffness).eval(), J.stiffness);
+      scatterMatrix(slot_[e], k.stiffness, J.stiffness, lambda);
     }
   }
   const auto& node_loads = model_.nodeLoads();
   for (size_t i = 0; i < node_loads.size(); ++i) {
     if (!node_loads[i]->stiff()) continue;
     const PointForce f = node_loads[i]->evaluate(nodePoint(state, node_loads[i]->node()), true);
-    scatterMatrix(node_slot_[i], (-lambda * f.d_position).eval(), J.stiffness);
-    scatterMatrix(node_slot_[i], (-lambda * f.d_velocity).eval(), J.damping);
-    scatterMatrix(node_slot_[i], (-lambda * f.d_acceleration).eval(), J.mass);
+    scatterMatrix(node_slot_[i], f.d_position, J.stiffness, -lambda);
+    scatterMatrix(node_slot_[i], f.d_velocity, J.damping, -lambda);
+    scatterMatrix(node_slot_[i], f.d_acceleration, J.mass, -lambda);
   }
 }
 
@@ -238,7 +238,7 @@ void Assembler::subtractLoadStiffness(const State& state, SparseMatrix& K) const
     const double value = pressureFactor(pressure, state);
     for (int e : pressure.elements) {
       model_.element(e).pressureLoad(context(state, e), value, p, &dp);
-      scatterMatrix(slot_[e], (-dp).eval(), K);
+      scatterMatrix(slot_[e], dp, K, -1.0);
     }
   }
 }
@@ -368,13 +368,14 @@ NodalField Assembler::reactions(const State& state) const {
                                         : (internalForce(state, F, nullptr), F);
   const Eigen::VectorXd& external =
       sameState(external_memo_, state) ? external_memo_.assembled : (externalLoad(state, P), P);
-  Eigen::VectorXd viscous = Eigen::VectorXd::Zero(internal.size());
+  Eigen::VectorXd viscous;  // only for a model with internal damping
   if (hasDamping()) dampingForce(state, viscous, nullptr);
   NodalField r = NodalField::Zero(3, model_.nodeCount());
   for (int n = 0; n < model_.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k)
       if (model_.isConstrained(n, k))
-        r(k, n) = internal(3 * n + k) + viscous(3 * n + k) - external(3 * n + k);
+        r(k, n) =
+            internal(3 * n + k) + (viscous.size() ? viscous(3 * n + k) : 0.0) - external(3 * n + k);
   return r;
 }
 

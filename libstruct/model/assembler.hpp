@@ -73,7 +73,9 @@ class Assembler {
     return {model_.reference(), state, e};
   }
   template <class ElementMatrix>
-  void scatterMatrix(const std::vector<int>& slots, const ElementMatrix& k, SparseMatrix& K) const;
+  // Adds scale * k into K's slots (no temporary for the scaled matrix).
+  void scatterMatrix(const std::vector<int>& slots, const ElementMatrix& k, SparseMatrix& K,
+                     double scale = 1.0) const;
   LoadPoint nodePoint(const State& state, int node) const;
 
   double pressureFactor(const PressureLoad& load, const State& state) const;
