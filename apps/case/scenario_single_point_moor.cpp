@@ -290,12 +290,4 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
   return doc;
 }
 
-YAML::Node expandScenario(Diagnostics& diag, const YAML::Node& root) {
-  if (!root.IsMap() || !root["scenario"]) return root;
-  const YAML::Node s = root["scenario"];
-  if (s.IsScalar() && s.Scalar() == "single_point_moor") return expandSinglePointMoor(diag, root);
-  diag.error(s, "scenario: unknown (got " + describeNode(s) + ", expected single_point_moor)");
-  return root;
-}
-
 }  // namespace flexmoor::app

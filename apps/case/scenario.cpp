@@ -1,0 +1,39 @@
+// The table of scenarios: `scenario: NAME` picks the expansion that writes the full case.
+#include "apps/case/scenario.hpp"
+
+#include <string>
+
+#include "apps/case/yaml_input.hpp"
+
+namespace flexmoor::app {
+namespace {
+
+struct Scenario {
+  const char* name;
+  YAML::Node (*expand)(Diagnostics&, const YAML::Node&);
+};
+
+const Scenario kScenarios[] = {
+    {"single_point_moor", expandSinglePointMoor},
+};
+
+std::string scenarioNames() {
+  std::string names;
+  for (const Scenario& s : kScenarios) names += (names.empty() ? "" : " | ") + std::string(s.name);
+  return names;
+}
+
+}  // namespace
+
+YAML::Node expandScenario(Diagnostics& diag, const YAML::Node& root) {
+  if (!root.IsMap() || !root["scenario"]) return root;
+  const YAML::Node s = root["scenario"];
+  if (s.IsScalar())
+    for (const Scenario& known : kScenarios)
+      if (s.Scalar() == known.name) return known.expand(diag, root);
+  diag.error(s,
+             "scenario: unknown (got " + describeNode(s) + ", expected " + scenarioNames() + ")");
+  return root;
+}
+
+}  // namespace flexmoor::app
