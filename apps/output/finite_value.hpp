@@ -18,4 +18,11 @@ void requireFinite(double value, const std::string& path, Describe what) {
                            "; refusing to write a non-finite value");
 }
 
+// The same for the `count` values at `values`; `what(i)` describes value i.
+template <class Describe>
+void requireAllFinite(const double* values, size_t count, const std::string& path, Describe what) {
+  for (size_t i = 0; i < count; ++i)
+    if (!std::isfinite(values[i])) requireFinite(values[i], path, [&] { return what(i); });
+}
+
 }  // namespace flexmoor::app

@@ -1,6 +1,7 @@
 #include "apps/output/netcdf_file.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
 #include "apps/output/atomic_output.hpp"
@@ -70,7 +71,10 @@ void NetcdfFile::defineRecordLayout(int variable, const std::vector<int>& dimens
   const std::vector<size_t> chunks = recordChunks(extents, value_bytes);
   check(nc_def_var_chunking(id_, variable, NC_CHUNKED, chunks.data()),
         "chunking variable " + variableName(variable));
-  buffers_.insert_or_assign(variable, RecordBuffer(extents, chunks[0]));
+  if (!pending_.empty())  // a record's layout is fixed while it is filled
+    throw std::logic_error(path_ + ": a variable defined while a record is being filled");
+  if (buffers_.size() <= static_cast<size_t>(variable)) buffers_.resize(variable + 1);
+  buffers_[variable].emplace(extents, chunks[0]);
 }
 
 void NetcdfFile::putAttribute(int variable, const std::string& name, const std::string& value) {
@@ -93,7 +97,17 @@ void NetcdfFile::writtenInFull(int variable) {
         "defining variable " + variableName(variable) + " without fill");
 }
 
-void NetcdfFile::endDefine() { check(nc_enddef(id_), "leaving define mode"); }
+// Record variables reach HDF5 a chunk of records at a time from their buffers, so its chunk
+// cache would only copy them and, keeping every chunk it saw, grow with the file (49 of the
+// 50 MB written for the demo case recorded every step): it is turned off for them. Set in data
+// mode, where netCDF reopens the dataset with the setting.
+void NetcdfFile::endDefine() {
+  check(nc_enddef(id_), "leaving define mode");
+  for (size_t variable = 0; variable < buffers_.size(); ++variable)
+    if (buffers_[variable])
+      check(nc_set_var_chunk_cache(id_, static_cast<int>(variable), 0, 0, 0.75f),
+            "turning off the chunk cache of " + variableName(static_cast<int>(variable)));
+}
 
 void NetcdfFile::redefine() {
   drainAll();
@@ -117,15 +131,46 @@ void NetcdfFile::put(int variable, const std::vector<size_t>& start,
 
 void NetcdfFile::put(int variable, const std::vector<size_t>& start,
                      const std::vector<size_t>& count, const void* values, nc_type type) {
-  const auto buffer = buffers_.find(variable);
-  if (buffer == buffers_.end()) return write(variable, start, count, values, type);
-  if (buffer->second.accepts(start, count, type)) {
-    buffer->second.append(start, values, type);
-    if (buffer->second.full()) drain(variable, buffer->second);
-    return;
+  RecordBuffer* buffer = recordBuffer(variable);
+  if (!buffer || !buffer->isRecord(start, count)) {
+    if (buffer) drain(variable, *buffer);  // what is held comes first
+    return write(variable, start, count, values, type);
   }
-  drain(variable, buffer->second);  // what is held comes first
-  write(variable, start, count, values, type);
+  RecordBuffer& b = *buffer;
+  if (!b.follows(start[0], type)) drain(variable, b);
+  std::memcpy(b.slot(start[0], type), values, b.recordValues() * RecordBuffer::valueBytes(type));
+  b.commit();
+  if (b.full()) drain(variable, b);
+}
+
+RecordBuffer* NetcdfFile::recordBuffer(int variable) {
+  const bool held = variable >= 0 && static_cast<size_t>(variable) < buffers_.size() &&
+                    buffers_[variable].has_value();
+  return held ? &*buffers_[variable] : nullptr;
+}
+
+void* NetcdfFile::slot(int variable, size_t record, nc_type type) {
+  RecordBuffer* buffer = recordBuffer(variable);
+  if (!buffer)
+    throw std::logic_error(path_ + ": " + variableName(variable) + " is not a record variable");
+  RecordBuffer& b = *buffer;
+  if (!b.follows(record, type)) drain(variable, b);
+  pending_.push_back(variable);
+  return b.slot(record, type);
+}
+
+void NetcdfFile::drop() {
+  for (const int variable : pending_) buffers_[variable]->drop();
+  pending_.clear();
+}
+
+void NetcdfFile::commit() {
+  for (const int variable : pending_) {
+    RecordBuffer& b = *buffers_[variable];
+    b.commit();
+    if (b.full()) drain(variable, b);
+  }
+  pending_.clear();
 }
 
 void NetcdfFile::write(int variable, const std::vector<size_t>& start,
@@ -149,12 +194,16 @@ void NetcdfFile::write(int variable, const std::vector<size_t>& start,
 
 void NetcdfFile::drain(int variable, RecordBuffer& buffer) {
   if (buffer.empty()) return;
+  if (buffer.filling())
+    throw std::logic_error(path_ + ": " + variableName(variable) +
+                           " written out while a record of it is being filled");
   write(variable, buffer.start(), buffer.count(), buffer.values(), buffer.type());
   buffer.clear();
 }
 
 void NetcdfFile::drainAll() {
-  for (auto& [variable, buffer] : buffers_) drain(variable, buffer);
+  for (size_t variable = 0; variable < buffers_.size(); ++variable)
+    if (buffers_[variable]) drain(static_cast<int>(variable), *buffers_[variable]);
 }
 
 void NetcdfFile::sync() {

@@ -10,8 +10,9 @@
 #include <netcdf.h>
 
 #include <chrono>
-#include <map>
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "apps/output/record_buffer.hpp"
@@ -61,6 +62,17 @@ class NetcdfFile {
            const int* values);
   void put(int variable, const std::vector<size_t>& start, const std::vector<size_t>& count,
            const char* values);
+  // Data mode, one whole record of a record variable written in place: the room for the
+  // values of record `record` of `variable` (its record_values, in C order), for the caller to
+  // fill. commit() adds every slot taken since the last commit or drop to what is written;
+  // drop() forgets them (so a record found wrong is never written in part).
+  template <class T>
+  T* slot(int variable, size_t record) {
+    return static_cast<T*>(slot(variable, record, typeOf<T>()));
+  }
+  void commit();
+  void drop();
+
   // Flushes everything put so far to disk when the last flush is at least the flush interval
   // old; the first call always flushes.
   void sync();
@@ -75,6 +87,12 @@ class NetcdfFile {
   void defineRecordLayout(int variable, const std::vector<int>& dimensions, nc_type type);
   void put(int variable, const std::vector<size_t>& start, const std::vector<size_t>& count,
            const void* values, nc_type type);
+  void* slot(int variable, size_t record, nc_type type);
+  template <class T>
+  static constexpr nc_type typeOf() {
+    static_assert(std::is_same_v<T, double> || std::is_same_v<T, int> || std::is_same_v<T, char>);
+    return std::is_same_v<T, double> ? NC_DOUBLE : std::is_same_v<T, int> ? NC_INT : NC_CHAR;
+  }
   void write(int variable, const std::vector<size_t>& start, const std::vector<size_t>& count,
              const void* values, nc_type type);
   void drain(int variable, RecordBuffer& buffer);
@@ -85,7 +103,10 @@ class NetcdfFile {
   std::chrono::steady_clock::duration flush_interval_;
   std::chrono::steady_clock::time_point last_flush_;
   int flushes_ = 0;
-  std::map<int, RecordBuffer> buffers_;  // of every record variable
+  // The buffer of a record variable, else null.
+  RecordBuffer* recordBuffer(int variable);
+  std::vector<std::optional<RecordBuffer>> buffers_;  // by variable id: of every record variable
+  std::vector<int> pending_;  // variables whose slot was taken since the last commit or drop
 };
 
 }  // namespace flexmoor::app

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <ctime>
-#include <deque>
 #include <stdexcept>
 #include <tuple>
 
@@ -41,41 +40,10 @@ std::string unitSystemName(UnitSystem system) {
 
 }  // namespace
 
-// The values of one variable in the current record, gathered and checked before any is written.
-struct NetcdfWriter::Slab {
-  int variable;
-  std::vector<size_t> start, count;
-  std::vector<double> values;
-};
-
-// The slabs of one record, kept from record to record so that gathering allocates nothing once
-// the first record has sized them (a deque: references to earlier slabs stay valid).
-class NetcdfWriter::Slabs {
- public:
-  Slab& next(int variable, std::initializer_list<size_t> start,
-             std::initializer_list<size_t> count) {
-    if (used_ == pool_.size()) pool_.emplace_back();
-    Slab& s = pool_[used_++];
-    s.variable = variable;
-    s.start.assign(start);
-    s.count.assign(count);
-    s.values.clear();
-    return s;
-  }
-  void clear() { used_ = 0; }
-  auto begin() const { return pool_.begin(); }
-  auto end() const { return pool_.begin() + used_; }
-
- private:
-  std::deque<Slab> pool_;
-  size_t used_ = 0;
-};
-
 NetcdfWriter::~NetcdfWriter() = default;
 
 NetcdfWriter::NetcdfWriter(const std::string& path, const model::Model& model, const Case& c)
-    : slabs_(std::make_unique<Slabs>()),
-      file_(path),
+    : file_(path),
       node_count_(model.nodeCount()),
       element_count_(model.elementCount()),
       reference_(model.reference()),
@@ -288,59 +256,49 @@ void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
 void NetcdfWriter::gatherNodal(const Vector3Variable& v, const model::NodalField& field) {
   const size_t nodes = node_count_;
   for (int k = 0; k < 3; ++k) {
-    Slab& s = slabs_->next(v.id[k], {records_, 0}, {1, nodes});
-    s.values.resize(nodes);
-    for (size_t n = 0; n < nodes; ++n) {
-      s.values[n] = field(k, n);
-      requireFinite(s.values[n], path(), [&] {
+    Eigen::Map<Eigen::RowVectorXd> values(file_.slot<double>(v.id[k], records_), nodes);
+    values = field.row(k);
+    if (!values.allFinite())
+      requireAllFinite(values.data(), nodes, path(), [&](size_t n) {
         return v.name + kAxis[k] + "[step " + std::to_string(records_) + ", node " +
                std::to_string(n) + "]";
       });
-    }
   }
 }
 
 void NetcdfWriter::gatherTensions(const ResultFrame& frame) {
   const size_t elements = element_count_;
-  Slab& ends = slabs_->next(tension_end_, {records_, 0, 0}, {1, elements, 2});
-  Slab& points = slabs_->next(tension_point_, {records_, 0}, {1, 0});
+  double* ends = file_.slot<double>(tension_end_, records_);
+  double* points = file_.slot<double>(tension_point_, records_);
+  size_t point = 0;
   for (size_t e = 0; e < elements; ++e) {
     const element::ElementResult& r = frame.elements[e];
     const bool line = !r.point_tension.empty();  // an axial force applies to lines only
-    for (int end = 0; end < 2; ++end) {
-      if (!line) {
-        ends.values.push_back(NC_FILL_DOUBLE);
-        continue;
-      }
-      requireFinite(r.end_tension[end], path(), [&] {
-        return "tension_end[step " + std::to_string(records_) + ", element " + std::to_string(e) +
-               ", end " + std::to_string(end) + "]";
-      });
-      ends.values.push_back(r.end_tension[end]);
-    }
-    for (const double t : r.point_tension) {
-      requireFinite(t, path(), [&] {
-        return "tension_point[step " + std::to_string(records_) + ", point " +
-               std::to_string(points.values.size()) + "] (element " + std::to_string(e) + ")";
-      });
-      points.values.push_back(t);
-    }
+    for (int end = 0; end < 2; ++end)
+      ends[2 * e + end] = line ? r.end_tension[end] : NC_FILL_DOUBLE;
+    const size_t first = point;
+    for (const double t : r.point_tension) points[point++] = t;
+    requireAllFinite(points + first, point - first, path(), [&](size_t i) {
+      return "tension_point[step " + std::to_string(records_) + ", point " +
+             std::to_string(first + i) + "] (element " + std::to_string(e) + ")";
+    });
   }
-  points.count[1] = points.values.size();
+  requireAllFinite(ends, 2 * elements, path(), [&](size_t i) {
+    return "tension_end[step " + std::to_string(records_) + ", element " + std::to_string(i / 2) +
+           ", end " + std::to_string(i % 2) + "]";
+  });
 }
 
 void NetcdfWriter::gatherResultants(const ResultFrame& frame) {
   if (resultant_max_ < 0) return;
   const size_t elements = element_count_;
-  Slab& larger = slabs_->next(resultant_max_, {records_, 0}, {1, elements});
-  Slab& smaller = slabs_->next(resultant_min_, {records_, 0}, {1, elements});
-  larger.values.resize(elements);
-  smaller.values.resize(elements);
+  double* larger = file_.slot<double>(resultant_max_, records_);
+  double* smaller = file_.slot<double>(resultant_min_, records_);
   for (size_t e = 0; e < elements; ++e) {
     const auto n = principalResultants(frame.elements[e]);
-    larger.values[e] = n ? n->first : NC_FILL_DOUBLE;
-    smaller.values[e] = n ? n->second : NC_FILL_DOUBLE;
-    requireFinite(larger.values[e] + smaller.values[e], path(), [&] {
+    larger[e] = n ? n->first : NC_FILL_DOUBLE;
+    smaller[e] = n ? n->second : NC_FILL_DOUBLE;
+    requireFinite(larger[e] + smaller[e], path(), [&] {
       return "membrane_resultant[step " + std::to_string(records_) + ", element " +
              std::to_string(e) + "]";
     });
@@ -370,59 +328,60 @@ void NetcdfWriter::defineModes(size_t count) {
 
 void NetcdfWriter::gatherModes(const ResultFrame& frame) {
   if (frame.frequencies.empty()) return;
-  if (dim_mode_ < 0) defineModes(frame.frequencies.size());
-  if (frame.frequencies.size() != mode_count_)
-    throw std::runtime_error(path() +
-                             ": every modes step of a case must ask for the same number "
-                             "of modes (" +
-                             std::to_string(mode_count_) + ")");
-  Slab& f = slabs_->next(angular_frequency_, {records_, 0}, {1, mode_count_});
-  f.values = frame.frequencies;
-  for (size_t m = 0; m < mode_count_; ++m)
-    requireFinite(f.values[m], path(),
-                  [&] { return "angular_frequency[mode " + std::to_string(m) + "]"; });
+  double* f = file_.slot<double>(angular_frequency_, records_);
+  std::copy(frame.frequencies.begin(), frame.frequencies.end(), f);
+  requireAllFinite(f, mode_count_, path(),
+                   [&](size_t m) { return "angular_frequency[mode " + std::to_string(m) + "]"; });
   const size_t nodes = node_count_;
   for (int k = 0; k < 3; ++k) {
-    Slab& s = slabs_->next(mode_shape_.id[k], {records_, 0, 0}, {1, mode_count_, nodes});
-    s.values.resize(mode_count_ * nodes);
+    double* s = file_.slot<double>(mode_shape_.id[k], records_);
     for (size_t m = 0; m < mode_count_; ++m)
-      for (size_t n = 0; n < nodes; ++n) {
-        s.values[m * nodes + n] = frame.mode_shapes[m](k, n);
-        requireFinite(s.values[m * nodes + n], path(), [&] {
-          return "mode_shape" + std::string(kAxis[k]) + "[mode " + std::to_string(m) + ", node " +
-                 std::to_string(n) + "]";
-        });
-      }
+      for (size_t n = 0; n < nodes; ++n) s[m * nodes + n] = frame.mode_shapes[m](k, n);
+    requireAllFinite(s, mode_count_ * nodes, path(), [&](size_t i) {
+      return "mode_shape" + std::string(kAxis[k]) + "[mode " + std::to_string(i / nodes) +
+             ", node " + std::to_string(i % nodes) + "]";
+    });
   }
 }
 
 void NetcdfWriter::write(const ResultFrame& frame) {
   requireMatches(frame);
-  const model::State& s = *frame.state;
-  slabs_->clear();
-  const auto gatherScalar = [&](int variable, const char* name, double value) {
-    requireFinite(value, path(),
-                  [&] { return std::string(name) + "[step " + std::to_string(records_) + "]"; });
-    slabs_->next(variable, {records_}, {1}).values.push_back(value);
-  };
-  gatherScalar(time_, "time", s.time);
-  gatherScalar(load_factor_, "load_factor", s.load_factor);
-  gatherNodal(displacement_, s.displacement);
-  position_values_ = reference_ + s.displacement;
-  gatherNodal(position_, position_values_);
-  gatherNodal(velocity_, s.velocity);
-  gatherNodal(reaction_, frame.reactions);
+  // The layout first: defining variables writes out what is held.
   if (dim_point_ < 0) definePoints(frame);
-  gatherTensions(frame);
-  gatherResultants(frame);
-  gatherModes(frame);
-
-  const int step_number = frame.step_index + 1;
-  record_start_[0] = records_;
-  file_.put(step_number_, record_start_, record_count_, &step_number);
-  putText(step_name_, records_, frame.step_name);
-  for (const Slab& slab : *slabs_)
-    file_.put(slab.variable, slab.start, slab.count, slab.values.data());
+  if (!frame.frequencies.empty()) {
+    if (dim_mode_ < 0) defineModes(frame.frequencies.size());
+    if (frame.frequencies.size() != mode_count_)
+      throw std::runtime_error(path() +
+                               ": every modes step of a case must ask for the same number "
+                               "of modes (" +
+                               std::to_string(mode_count_) + ")");
+  }
+  const model::State& s = *frame.state;
+  try {
+    const auto gatherScalar = [&](int variable, const char* name, double value) {
+      requireFinite(value, path(),
+                    [&] { return std::string(name) + "[step " + std::to_string(records_) + "]"; });
+      *file_.slot<double>(variable, records_) = value;
+    };
+    gatherScalar(time_, "time", s.time);
+    gatherScalar(load_factor_, "load_factor", s.load_factor);
+    gatherNodal(displacement_, s.displacement);
+    position_values_ = reference_ + s.displacement;
+    gatherNodal(position_, position_values_);
+    gatherNodal(velocity_, s.velocity);
+    gatherNodal(reaction_, frame.reactions);
+    gatherTensions(frame);
+    gatherResultants(frame);
+    gatherModes(frame);
+    *file_.slot<int>(step_number_, records_) = frame.step_index + 1;
+    char* name = file_.slot<char>(step_name_, records_);
+    std::fill_n(std::copy(frame.step_name.begin(), frame.step_name.end(), name),
+                kNameLength - frame.step_name.size(), '\0');
+  } catch (...) {
+    file_.drop();  // nothing of a refused record is written
+    throw;
+  }
+  file_.commit();
   ++records_;
   file_.sync();
 }

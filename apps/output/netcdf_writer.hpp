@@ -64,9 +64,6 @@ class NetcdfWriter final : public ResultSink {
     std::string name;  // variable names are name + "_x", "_y", "_z"
     std::array<int, 3> id;
   };
-  struct Slab;  // one variable's part of a record, checked before anything is written
-  class Slabs;  // the slabs of a record, reused from record to record
-
   void defineHeader(const model::Model& model, const Case& c);
   Vector3Variable defineVector3(const std::string& name, const std::vector<int>& dimensions,
                                 const std::string& long_name, const std::string& units);
@@ -82,7 +79,6 @@ class NetcdfWriter final : public ResultSink {
   void gatherResultants(const ResultFrame& frame);
   void putText(int variable, size_t index, const std::string& text);
 
-  std::unique_ptr<Slabs> slabs_;
   NetcdfFile file_;
   int node_count_ = 0;
   int element_count_ = 0;
@@ -90,10 +86,10 @@ class NetcdfWriter final : public ResultSink {
   std::string force_unit_, resultant_unit_, mass_unit_;
   std::vector<int> element_points_;  // integration points per element, from the first frame
   size_t records_ = 0;
-  // Buffers reused by every record, so that writing a record allocates nothing.
+  // Buffers reused by every record, so that writing a record allocates nothing (its values go
+  // straight into the file's record buffers: NetcdfFile::slot).
   model::NodalField position_values_;
   std::string text_;
-  std::vector<size_t> record_start_{0}, record_count_{1};
   std::vector<size_t> text_start_{0, 0}, text_count_{1, kNameLength};
 
   int dim_step_ = -1, dim_node_ = -1, dim_element_ = -1, dim_end_ = -1, dim_name_ = -1;

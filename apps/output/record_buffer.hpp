@@ -3,7 +3,8 @@
 // written as one hyperslab. A call to nc_put_vara costs about 10 us whatever its size (HDF5
 // builds property lists and dataspaces and extends the dataset each time) and a result record
 // takes some twenty calls, more than a time step of a small model; a buffer of records makes it
-// one call per variable per chunk of records (record_chunks.hpp).
+// one call per variable per chunk of records (record_chunks.hpp). A record is written in place:
+// slot() is the room for it, which the caller fills and then commit()s.
 #include <netcdf.h>
 
 #include <cstddef>
@@ -17,12 +18,26 @@ class RecordBuffer {
   // to `capacity` records at a time.
   RecordBuffer(std::vector<size_t> extents, size_t capacity);
 
-  // True when the values of shape `count` at `start`, of memory type `type` (NC_DOUBLE, NC_INT
-  // or NC_CHAR), are one whole record that follows the held ones (or the first one held).
-  bool accepts(const std::vector<size_t>& start, const std::vector<size_t>& count,
-               nc_type type) const;
-  // Holds one record that accepts() took; `values` has the record's values of `type`.
-  void append(const std::vector<size_t>& start, const void* values, nc_type type);
+  // True when the values of shape `count` at `start` are one whole record.
+  bool isRecord(const std::vector<size_t>& start, const std::vector<size_t>& count) const;
+  // True when record `record` of memory type `type` (NC_DOUBLE, NC_INT or NC_CHAR) may follow
+  // the held ones (or be the first one held).
+  bool follows(size_t record, nc_type type) const {
+    return empty() || (type == type_ && record == first_ + records_);
+  }
+  // The room for record `record`, which follows(); its values count record_values(). Filling it
+  // holds nothing until commit(); a slot not committed is overwritten by the next one.
+  void* slot(size_t record, nc_type type);
+  void commit() {
+    ++records_;
+    filling_ = false;
+  }
+  void drop() { filling_ = false; }
+  // A slot was taken and neither committed nor dropped.
+  bool filling() const { return filling_; }
+  size_t recordValues() const { return record_values_; }
+  // Bytes of one value of memory type `type`.
+  static size_t valueBytes(nc_type type);
 
   bool empty() const { return records_ == 0; }
   bool full() const { return records_ >= capacity_; }
@@ -31,7 +46,7 @@ class RecordBuffer {
   std::vector<size_t> count() const;
   const void* values() const { return bytes_.data(); }
   nc_type type() const { return type_; }
-  void clear();
+  void clear() { records_ = 0; }
 
  private:
   std::vector<size_t> extents_;
@@ -39,7 +54,8 @@ class RecordBuffer {
   size_t capacity_;
   size_t first_ = 0, records_ = 0;
   nc_type type_ = NC_NAT;
-  std::vector<unsigned char> bytes_;
+  bool filling_ = false;
+  std::vector<unsigned char> bytes_;  // room for `capacity` records once the first is taken
 };
 
 }  // namespace flexmoor::app

@@ -50,12 +50,15 @@ void Simulation::release(const StepSpec& step) {
 
 ResultFrame Simulation::frame(int i, std::string name, const model::State& s) const {
   ResultFrame f;
+  fill(i, std::move(name), s, f);
+  return f;
+}
+
+void Simulation::fill(int i, std::string name, const model::State& s, ResultFrame& f) const {
   f.step_index = i;
   f.step_name = std::move(name);
   f.state = &s;
-  f.elements = assembler_->elementResults(s);
-  f.reactions = assembler_->reactions(s);
-  return f;
+  assembler_->results(s, f.elements, f.reactions);
 }
 
 // Runs step i from `state`; returns its closing frame. Throws ConvergenceError with `state` at
@@ -109,11 +112,15 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
   int accepted = 0;
   double next_report = start + 0.1 * duration;
   SummarySeries series(c_, i, *assembler_);
+  ResultFrame streamed;  // one for every record of the step: its storage is reused
   auto on_step = [&](const model::State& s) {
     ++accepted;
     series.sample(s);
     const bool last = s.time >= end - 1e-9 * std::max(1.0, duration);
-    if (accepted % step.output_every == 0 || last) write(frame(i, step.name, s));
+    if (accepted % step.output_every == 0 || last) {
+      fill(i, step.name, s, streamed);
+      write(streamed);
+    }
     if (s.time >= next_report - 1e-12 || last) {
       log_ << "  t = " << std::setprecision(6) << s.time << " s (" << std::setprecision(3)
            << 100.0 * (s.time - start) / duration << "%), " << accepted << " steps" << std::endl;

@@ -50,6 +50,8 @@ class Simulation {
  private:
   ResultFrame step(int i, model::State& state);
   ResultFrame frame(int i, std::string name, const model::State& s) const;
+  // The frame of state s of step i into f, reusing its storage.
+  void fill(int i, std::string name, const model::State& s, ResultFrame& f) const;
   ResultFrame modes(int i, const model::State& state);
   ResultFrame dynamic(int i, model::State& state);
   void release(const StepSpec& step);

@@ -33,7 +33,7 @@ AxisymmetricMembrane<N>::AxisymmetricMembrane(std::vector<int> nodes, MembraneSe
                                               int quadrature_points)
     : Element(std::move(nodes)),
       section_(std::move(section)),
-      quadrature_points_(quadrature_points > 0 ? quadrature_points : N + 1) {
+      rule_(shape::gaussLegendre(quadrature_points > 0 ? quadrature_points : N + 1)) {
   if (static_cast<int>(this->nodes().size()) != N)
     throw std::invalid_argument("axisymmetric membrane node count does not match its order");
 }
@@ -55,15 +55,14 @@ void AxisymmetricMembrane<N>::internalForce(const ElementContext& c, Eigen::Vect
   gather(c, X, Y);
   f.setZero(3 * N);
   if (K) K->setZero(3 * N, 3 * N);
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q) {
-    const typename L::Vector Lv = L::values(rule.points[q]);
-    const typename L::Vector dL = L::derivatives(rule.points[q]);
+  for (int q = 0; q < rule_.size(); ++q) {
+    const typename L::Vector Lv = L::values(rule_.points[q]);
+    const typename L::Vector dL = L::derivatives(rule_.points[q]);
     const Vector3d x1 = X * dL, y1 = Y * dL;
     const double r = X.row(0).dot(Lv), rho = Y.row(0).dot(Lv);
     const Matrix2d a = metric(x1, r), A = metric(y1, rho);
     const material::MembraneStress s = section_.material->stress(a, A);
-    const double dV = section_.thickness * std::sqrt(a.determinant()) * rule.weights[q];
+    const double dV = section_.thickness * std::sqrt(a.determinant()) * rule_.weights[q];
     // Eq. 3.17 on the shell of revolution: T^11 L^I,1 y,1 + T^22 rho L^I e_r
     Eigen::Matrix<double, 2, 3 * N> B = Eigen::Matrix<double, 2, 3 * N>::Zero();
     for (int I = 0; I < N; ++I) {
@@ -91,11 +90,10 @@ void AxisymmetricMembrane<N>::mass(const ElementContext& c, MassKind kind,
   Coordinates X, Y;
   gather(c, X, Y);
   Eigen::Matrix<double, N, N> m = Eigen::Matrix<double, N, N>::Zero();
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q) {
-    const typename L::Vector Lv = L::values(rule.points[q]);
+  for (int q = 0; q < rule_.size(); ++q) {
+    const typename L::Vector Lv = L::values(rule_.points[q]);
     const double dA =
-        (X * L::derivatives(rule.points[q])).norm() * X.row(0).dot(Lv) * rule.weights[q];
+        (X * L::derivatives(rule_.points[q])).norm() * X.row(0).dot(Lv) * rule_.weights[q];
     m += (section_.density * section_.thickness * dA) * (Lv * Lv.transpose());  // Eq. 4.40
   }
   nodalMass<N>(m, kind, M);
@@ -124,22 +122,21 @@ void AxisymmetricMembrane<N>::followerPressure(const ElementContext& c,
   }
   f.setZero(3 * N);
   if (dfdu) dfdu->setZero(3 * N, 3 * N);
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q) {
-    const typename L::Vector Lv = L::values(rule.points[q]);
-    const typename L::Vector dL = L::derivatives(rule.points[q]);
+  for (int q = 0; q < rule_.size(); ++q) {
+    const typename L::Vector Lv = L::values(rule_.points[q]);
+    const typename L::Vector dL = L::derivatives(rule_.points[q]);
     const Vector3d t = Y * dL;
     const double rho = Y.row(0).dot(Lv);
     model::LoadPoint point = interpolatedPoint(c, Y, V, A, Lv);
     const model::PointPressure p = pressure(point, dfdu != nullptr);
-    const double w = p.pressure * rule.weights[q];
+    const double w = p.pressure * rule_.weights[q];
     // Eq. 3.37 per radian: n = y,theta x y,xi = rho (t_z, 0, -t_r): the pressure pushes to the
     // right of the meridian (outwards for a meridian that runs up the axis)
     const Vector3d n(rho * t.z(), 0.0, -rho * t.x());
     for (int I = 0; I < N; ++I) f.template segment<3>(3 * I) += (w * Lv(I)) * n;
     if (!dfdu) continue;
     // dn/du^J, and the gradient part dp/du^J = L^J (dp/dy)^T
-    const Matrix3d n_grad = rule.weights[q] * (n * p.d_position.transpose());
+    const Matrix3d n_grad = rule_.weights[q] * (n * p.d_position.transpose());
     for (int J = 0; J < N; ++J) {
       Matrix3d dn = Matrix3d::Zero();
       dn(0, 0) = Lv(J) * t.z();
@@ -152,15 +149,14 @@ void AxisymmetricMembrane<N>::followerPressure(const ElementContext& c,
 }
 
 template <int N>
-ElementResult AxisymmetricMembrane<N>::result(const ElementContext& c) const {
+void AxisymmetricMembrane<N>::result(const ElementContext& c, ElementResult& out) const {
   using L = shape::Lagrange1D<N>;
   Coordinates X, Y;
   gather(c, X, Y);
-  ElementResult r;
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q) {
-    const typename L::Vector Lv = L::values(rule.points[q]);
-    const typename L::Vector dL = L::derivatives(rule.points[q]);
+  out.clear();
+  for (int q = 0; q < rule_.size(); ++q) {
+    const typename L::Vector Lv = L::values(rule_.points[q]);
+    const typename L::Vector dL = L::derivatives(rule_.points[q]);
     const Vector3d x1 = X * dL, y1 = Y * dL;
     const double r0 = X.row(0).dot(Lv), rho = Y.row(0).dot(Lv);
     const Matrix2d a = metric(x1, r0), A = metric(y1, rho);
@@ -169,16 +165,15 @@ ElementResult AxisymmetricMembrane<N>::result(const ElementContext& c) const {
     const double scale = section_.thickness * std::sqrt(a.determinant() / A.determinant());
     Matrix3d n = scale * s.T(0, 0) * (y1 * y1.transpose());
     n(1, 1) = scale * s.T(1, 1) * rho * rho;
-    r.point_resultant.push_back(n);
+    out.point_resultant.push_back(n);
   }
-  return r;
 }
 
 template <int N>
 double AxisymmetricMembrane<N>::minRelativeJacobian(const model::NodalField& X) const {
   Coordinates Xe;
   for (int I = 0; I < N; ++I) Xe.col(I) = X.col(nodes()[I]);
-  const std::vector<double>& xi = shape::gaussLegendre(quadrature_points_).points;
+  const std::vector<double>& xi = rule_.points;
   double smallest = lineRelativeJacobian<N>(Xe, xi);
   const double size = boundingDiagonal<N>(Xe);
   for (double p : xi)
@@ -231,14 +226,13 @@ void HoopCable::bodyLoad(const ElementContext& c, const Vector3d& g, Eigen::Vect
   p = section_.density * section_.area * c.reference(0, nodes()[0]) * Vector3d(0.0, 0.0, g.z());
 }
 
-ElementResult HoopCable::result(const ElementContext& c) const {
+void HoopCable::result(const ElementContext& c, ElementResult& out) const {
   const double r = c.reference(0, nodes()[0]);
   const double rho = r + c.state.displacement(0, nodes()[0]);
-  ElementResult out;
+  out.clear();
   const double tension = section_.material->tension(r * r, rho * rho, section_.area);
-  out.point_tension = {tension};
+  out.point_tension.push_back(tension);
   out.end_tension[0] = out.end_tension[1] = tension;
-  return out;
 }
 
 }  // namespace flexmoor::element

@@ -25,7 +25,8 @@ class AxisymmetricMembrane final : public Element {
   // for a field that is axisymmetric about the z axis (hydrostatic pressure).
   void followerPressure(const ElementContext& c, const PressureField& pressure, Eigen::VectorXd& f,
                         Eigen::MatrixXd* dfdu) const override;
-  ElementResult result(const ElementContext& c) const override;
+  using Element::result;
+  void result(const ElementContext& c, ElementResult& out) const override;
   // The meridian's, and the radius r / D at each integration point (the hoop metric is r^2).
   double minRelativeJacobian(const model::NodalField& X) const override;
 
@@ -33,7 +34,7 @@ class AxisymmetricMembrane final : public Element {
   using Coordinates = Eigen::Matrix<double, 3, N>;
   void gather(const ElementContext& c, Coordinates& X, Coordinates& Y) const;
   MembraneSection section_;
-  int quadrature_points_;
+  const shape::QuadratureRule1D& rule_;  // Gauss-Legendre, along the element
 };
 
 // A circumferential cable (hoop ring) at one node of an axisymmetric model: radius r = x of the
@@ -50,7 +51,8 @@ class HoopCable final : public Element {
   void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
   void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
                 Eigen::VectorXd& p) const override;
-  ElementResult result(const ElementContext& c) const override;
+  using Element::result;
+  void result(const ElementContext& c, ElementResult& out) const override;
 
  private:
   CableSection section_;

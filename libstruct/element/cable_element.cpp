@@ -19,7 +19,7 @@ template <int N>
 CableElement<N>::CableElement(std::vector<int> nodes, CableSection section, int quadrature_points)
     : Element(std::move(nodes)),
       section_(std::move(section)),
-      quadrature_points_(quadrature_points > 0 ? quadrature_points : N) {
+      rule_(shape::gaussLegendre(quadrature_points > 0 ? quadrature_points : N)) {
   if (static_cast<int>(this->nodes().size()) != N)
     throw std::invalid_argument("cable element node count does not match its order");
 }
@@ -47,9 +47,8 @@ template <int N>
 double CableElement<N>::axialDamping(const Coordinates& X) const {
   if (section_.damping_ratio <= 0.0) return section_.axial_damping;
   double length = 0.0;  // unstretched, int |x,1| dxi
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q)
-    length += (X * shape::Lagrange1D<N>::derivatives(rule.points[q])).norm() * rule.weights[q];
+  for (int q = 0; q < rule_.size(); ++q)
+    length += (X * shape::Lagrange1D<N>::derivatives(rule_.points[q])).norm() * rule_.weights[q];
   const double EA = section_.material->initialModulus() * section_.area;
   return dampingCoefficientOfRatio(section_.damping_ratio, length / (N - 1), EA,
                                    section_.density * section_.area);
@@ -72,10 +71,9 @@ void CableElement<N>::dampingForce(const ElementContext& c, Eigen::VectorXd& f,
   gather(c, X, Y);
   gatherVelocity(c, V);
   const double BA = axialDamping(X);
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q) {
-    const typename L::Vector dL = L::derivatives(rule.points[q]);
-    const double weight = BA * rule.weights[q] / (X * dL).norm();
+  for (int q = 0; q < rule_.size(); ++q) {
+    const typename L::Vector dL = L::derivatives(rule_.points[q]);
+    const double weight = BA * rule_.weights[q] / (X * dL).norm();
     const AxialRate p = axialRate(Y * dL, V * dL);
     for (int I = 0; I < N; ++I) f.template segment<3>(3 * I) += (weight * dL(I)) * p.value;
     if (!J) continue;
@@ -96,15 +94,14 @@ void CableElement<N>::internalForce(const ElementContext& c, Eigen::VectorXd& f,
   gather(c, X, Y);
   f.setZero(3 * N);
   if (K) K->setZero(3 * N, 3 * N);
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q) {
-    const typename L::Vector dL = L::derivatives(rule.points[q]);
+  for (int q = 0; q < rule_.size(); ++q) {
+    const typename L::Vector dL = L::derivatives(rule_.points[q]);
     const Vector3d x1 = X * dL;  // x,1
     const Vector3d y1 = Y * dL;  // y,1
     const double a11 = x1.squaredNorm();
     const double A11 = y1.squaredNorm();
     const material::CableStress s = section_.material->stress(a11, A11);
-    const double dV = section_.area * std::sqrt(a11) * rule.weights[q];
+    const double dV = section_.area * std::sqrt(a11) * rule_.weights[q];
     // Eq. 3.29 / 4.42: F^I_i = int T^11 L^I,1 y_i,1 A0 sqrt(a11) dxi
     for (int I = 0; I < N; ++I) f.template segment<3>(3 * I) += (s.T11 * dL(I) * dV) * y1;
     if (!K) continue;
@@ -125,10 +122,9 @@ void CableElement<N>::mass(const ElementContext& c, MassKind kind, Eigen::Matrix
   Coordinates X, Y;
   gather(c, X, Y);
   Eigen::Matrix<double, N, N> m = Eigen::Matrix<double, N, N>::Zero();
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q) {
-    const typename L::Vector Lv = L::values(rule.points[q]);
-    const double ds0 = (X * L::derivatives(rule.points[q])).norm() * rule.weights[q];
+  for (int q = 0; q < rule_.size(); ++q) {
+    const typename L::Vector Lv = L::values(rule_.points[q]);
+    const double ds0 = (X * L::derivatives(rule_.points[q])).norm() * rule_.weights[q];
     m += (section_.density * section_.area * ds0) * (Lv * Lv.transpose());  // Eq. 4.49
   }
   nodalMass<N>(m, kind, M);
@@ -141,10 +137,9 @@ void CableElement<N>::bodyLoad(const ElementContext& c, const Vector3d& g,
   Coordinates X, Y;
   gather(c, X, Y);
   p.setZero(3 * N);
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q) {
-    const typename L::Vector Lv = L::values(rule.points[q]);
-    const double ds0 = (X * L::derivatives(rule.points[q])).norm() * rule.weights[q];
+  for (int q = 0; q < rule_.size(); ++q) {
+    const typename L::Vector Lv = L::values(rule_.points[q]);
+    const double ds0 = (X * L::derivatives(rule_.points[q])).norm() * rule_.weights[q];
     for (int I = 0; I < N; ++I)
       p.template segment<3>(3 * I) += (section_.density * section_.area * Lv(I) * ds0) * g;
   }
@@ -164,9 +159,8 @@ void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
   p.setZero(3 * N);
   if (J) J->setZero(3 * N);
   const bool per_current_length = load.measure() == model::LengthMeasure::Current;
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q) {
-    const double xi = rule.points[q];
+  for (int q = 0; q < rule_.size(); ++q) {
+    const double xi = rule_.points[q];
     const typename L::Vector Lv = L::values(xi);
     const typename L::Vector dL = L::derivatives(xi);
     const Vector3d y1 = Y * dL;
@@ -178,14 +172,14 @@ void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
     const model::PointForce f = load.evaluate(point, J != nullptr);
     // Eq. E.1, E.12: the load per length times the length element, |y,1| dxi on the deformed
     // line (the dissertation) or |x,1| dxi on the unstretched one (MoorDyn).
-    const double ds = (per_current_length ? y1_norm : x1_norm) * rule.weights[q];
+    const double ds = (per_current_length ? y1_norm : x1_norm) * rule_.weights[q];
     for (int I = 0; I < N; ++I) p.template segment<3>(3 * I) += (Lv(I) * ds) * f.force;
     if (!J) continue;
     // dt/dy,1 = (I - t t^T) / |y,1|; d(ds)/dy,1 = t^T dxi on the deformed line.
     const Matrix3d d_tangent =
         f.d_tangent * (Matrix3d::Identity() - point.tangent * point.tangent.transpose()) / y1_norm;
     const Vector3d d_ds =
-        per_current_length ? Vector3d(point.tangent * rule.weights[q]) : Vector3d::Zero();
+        per_current_length ? Vector3d(point.tangent * rule_.weights[q]) : Vector3d::Zero();
     for (int I = 0; I < N; ++I)
       for (int K = 0; K < N; ++K) {
         const Matrix3d dp = Lv(I) * (ds * (f.d_position * Lv(K) + d_tangent * dL(K)) +
@@ -209,25 +203,30 @@ double CableElement<N>::axialForce(const Coordinates& X, const Coordinates& Y, c
 }
 
 template <int N>
-ElementResult CableElement<N>::result(const ElementContext& c) const {
-  Coordinates X, Y, V;
+void CableElement<N>::result(const ElementContext& c, ElementResult& out) const {
+  Coordinates X, Y, V = Coordinates::Zero();
   gather(c, X, Y);
-  gatherVelocity(c, V);
   const double BA = hasDamping() ? axialDamping(X) : 0.0;
-  ElementResult r;
-  const auto& rule = shape::gaussLegendre(quadrature_points_);
-  for (int q = 0; q < rule.size(); ++q)
-    r.point_tension.push_back(axialForce(X, Y, V, BA, rule.points[q]));
-  r.end_tension[0] = axialForce(X, Y, V, BA, -1.0);
-  r.end_tension[1] = axialForce(X, Y, V, BA, 1.0);
-  return r;
+  if (BA != 0.0) gatherVelocity(c, V);
+  out.clear();
+  for (int q = 0; q < rule_.size(); ++q)
+    out.point_tension.push_back(axialForce(X, Y, V, BA, rule_.points[q]));
+}
+
+template <int N>
+double CableElement<N>::axialForceAt(const ElementContext& c, double xi) const {
+  Coordinates X, Y, V = Coordinates::Zero();
+  gather(c, X, Y);
+  const double BA = hasDamping() ? axialDamping(X) : 0.0;
+  if (BA != 0.0) gatherVelocity(c, V);
+  return axialForce(X, Y, V, BA, xi);
 }
 
 template <int N>
 double CableElement<N>::minRelativeJacobian(const model::NodalField& X) const {
   Coordinates Xe;
   for (int I = 0; I < N; ++I) Xe.col(I) = X.col(nodes()[I]);
-  std::vector<double> xi = shape::gaussLegendre(quadrature_points_).points;
+  std::vector<double> xi = rule_.points;
   xi.push_back(-1.0);
   xi.push_back(1.0);
   return lineRelativeJacobian<N>(Xe, xi);

@@ -5,6 +5,7 @@
 
 #include "libstruct/element/element.hpp"
 #include "libstruct/material/cable_material.hpp"
+#include "libstruct/shape/gauss_legendre.hpp"
 
 namespace flexmoor::element {
 
@@ -36,9 +37,14 @@ class CableElement final : public Element {
                 LoadMatrices* J) const override;
   bool hasDamping() const override;
   void dampingForce(const ElementContext& c, Eigen::VectorXd& f, LoadMatrices* J) const override;
-  // Axial force at the integration points and the ends, the viscous part BA d(lambda)/dt included.
-  ElementResult result(const ElementContext& c) const override;
-  // At the integration points and at the ends, where the end tensions are evaluated.
+  // Axial force at the integration points, the viscous part BA d(lambda)/dt included (the end
+  // tensions come from the assembler's nodal force balance: ElementResult).
+  using Element::result;
+  void result(const ElementContext& c, ElementResult& out) const override;
+  // The axial force from the strain at natural coordinate xi (at xi = +-1 the strain-based end
+  // tension, which converges more slowly than the nodal force balance).
+  double axialForceAt(const ElementContext& c, double xi) const;
+  // At the integration points and at the ends.
   double minRelativeJacobian(const model::NodalField& X) const override;
 
   const CableSection& section() const { return section_; }
@@ -53,7 +59,7 @@ class CableElement final : public Element {
                     double xi) const;
 
   CableSection section_;
-  int quadrature_points_;
+  const shape::QuadratureRule1D& rule_;  // Gauss-Legendre, along the element
 };
 
 // Builds the element of the right node count (2, 3 or 4 nodes).

@@ -19,8 +19,17 @@ enum class MassKind { Consistent, Lumped };
 // in the tangent plane) at each integration point.
 struct ElementResult {
   std::vector<double> point_tension;  // one per integration point, in the element's order
+  // The force on each end point: a line element of two or more nodes leaves it to the
+  // assembler, which takes it from the element's nodal force balance (Assembler::elementResults);
+  // a hoop (one node) gives its tension.
   double end_tension[2] = {0.0, 0.0};
   std::vector<Eigen::Matrix3d> point_resultant;
+  // Empties it, keeping the storage for the next result.
+  void clear() {
+    point_tension.clear();
+    end_tension[0] = end_tension[1] = 0.0;
+    point_resultant.clear();
+  }
 };
 
 // The negative derivatives of an element's nodal loads, the load's share of the tangent:
@@ -110,7 +119,14 @@ class Element {
     followerPressure(c, field, f, &J->stiffness);
     J->stiffness = -J->stiffness;
   }
-  virtual ElementResult result(const ElementContext& c) const = 0;
+  // The result at the state into `out`, whose storage is reused: a record of a long run
+  // allocates nothing.
+  virtual void result(const ElementContext& c, ElementResult& out) const = 0;
+  ElementResult result(const ElementContext& c) const {
+    ElementResult r;
+    result(c, r);
+    return r;
+  }
   // The smallest Jacobian of the map from natural coordinates to the reference geometry X over
   // the element's integration points, relative to a regular element of its size
   // (reference_jacobian.hpp): <= 0 when the element is folded, inverted or collapsed. Elements

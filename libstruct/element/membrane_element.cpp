@@ -158,10 +158,10 @@ void MembraneElement<Shape>::followerPressure(const ElementContext& c,
 }
 
 template <class Shape>
-ElementResult MembraneElement<Shape>::result(const ElementContext& c) const {
+void MembraneElement<Shape>::result(const ElementContext& c, ElementResult& out) const {
   Coordinates X, Y;
   gather(c, X, Y);
-  ElementResult r;
+  out.clear();
   for (int q = 0; q < rule_.size(); ++q) {
     const typename Shape::Derivatives dM =
         Shape::derivatives(rule_.points[q].x(), rule_.points[q].y());
@@ -169,10 +169,10 @@ ElementResult MembraneElement<Shape>::result(const ElementContext& c) const {
     const Matrix2d a = x.transpose() * x, A = y.transpose() * y;
     const material::MembraneStress s = section_.material->stress(a, A);
     // n = h sigma = h0 sqrt(a / A) T^ab y,a (x) y,b: force per unit current length
-    r.point_resultant.push_back(section_.thickness * std::sqrt(a.determinant() / A.determinant()) *
-                                (y * s.T * y.transpose()));
+    out.point_resultant.push_back(section_.thickness *
+                                  std::sqrt(a.determinant() / A.determinant()) *
+                                  (y * s.T * y.transpose()));
   }
-  return r;
 }
 
 template <class Shape>

@@ -30,7 +30,8 @@ class MembraneElement final : public Element {
                 Eigen::VectorXd& p) const override;
   void followerPressure(const ElementContext& c, const PressureField& pressure, Eigen::VectorXd& f,
                         Eigen::MatrixXd* dfdu) const override;
-  ElementResult result(const ElementContext& c) const override;
+  using Element::result;
+  void result(const ElementContext& c, ElementResult& out) const override;
   double minRelativeJacobian(const model::NodalField& X) const override;
 
  private:

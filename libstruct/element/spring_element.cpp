@@ -72,18 +72,15 @@ void SpringElement::bodyLoad(const ElementContext&, const Vector3d&, Eigen::Vect
   p.setZero(6);
 }
 
-ElementResult SpringElement::result(const ElementContext& c) const {
+void SpringElement::result(const ElementContext& c, ElementResult& out) const {
   Eigen::VectorXd f, viscous;
   internalForce(c, f, nullptr);
   dampingForce(c, viscous, nullptr);
   f += viscous;
-  ElementResult r;
   const Vector3d chord = c.reference.col(nodes()[1]) + c.state.displacement.col(nodes()[1]) -
                          c.reference.col(nodes()[0]) - c.state.displacement.col(nodes()[0]);
-  const double force = f.tail<3>().dot(chord.normalized());
-  r.point_tension = {force};
-  r.end_tension[0] = r.end_tension[1] = force;
-  return r;
+  out.clear();
+  out.point_tension.push_back(f.tail<3>().dot(chord.normalized()));
 }
 
 PointMassElement::PointMassElement(int node, double mass) : Element({node}), mass_(mass) {}

@@ -23,7 +23,8 @@ class SpringElement final : public Element {
   bool hasDamping() const override { return damping_ > 0.0; }
   void dampingForce(const ElementContext& c, Eigen::VectorXd& f, LoadMatrices* J) const override;
   // The spring's and the dashpot's force together.
-  ElementResult result(const ElementContext& c) const override;
+  using Element::result;
+  void result(const ElementContext& c, ElementResult& out) const override;
 
  private:
   double restLength(const ElementContext& c) const;
@@ -42,7 +43,8 @@ class PointMassElement final : public Element {
   void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
   void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
                 Eigen::VectorXd& p) const override;
-  ElementResult result(const ElementContext&) const override { return {}; }
+  using Element::result;
+  void result(const ElementContext&, ElementResult& out) const override { out.clear(); }
 
  private:
   double mass_;

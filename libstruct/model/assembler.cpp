@@ -316,37 +316,21 @@ void Assembler::applyPrescribed(State& state) const {
 void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scratch,
                                element::ElementResult& r) const {
   const element::Element& element = model_.element(e);
-  if (!scratch.checked) {
-    scratch.internal_memo = sameDisplacement(internal_memo_, state);
-    scratch.external_memo = sameState(external_memo_, state);
-    scratch.checked = true;
-  }
-  Eigen::VectorXd& f = scratch.force;
-  if (scratch.internal_memo)
-    f = internal_memo_.elements[e];
-  else
-    element.internalForce(context(state, e), f, nullptr);
-  if (scratch.external_memo) {
-    if (external_memo_.per_element) f -= external_memo_.elements[e];
-  } else {
-    Eigen::VectorXd& p = scratch.load;
-    elementLoad(state, e, p);
-    f -= p;
-  }
-  if (element.hasDamping()) {
-    element.dampingForce(context(state, e), scratch.damping, nullptr);
-    f += scratch.damping;
-  }
+  checkMemos(state, scratch);
+  if (!scratch.internal_memo) element.internalForce(context(state, e), scratch.force, nullptr);
+  const Eigen::VectorXd& f = scratch.internal_memo ? internal_memo_.elements[e] : scratch.force;
+  const bool loaded = !scratch.external_memo || external_memo_.per_element;
+  if (!scratch.external_memo) elementLoad(state, e, scratch.load);
+  const Eigen::VectorXd& p = scratch.external_memo ? external_memo_.elements[e] : scratch.load;
+  const bool damped = element.hasDamping();
+  if (damped) element.dampingForce(context(state, e), scratch.damping, nullptr);
   const auto& index = full_index_[e];
   Eigen::VectorXd& a = scratch.acceleration;
   a.resize(index.size());
   for (size_t k = 0; k < index.size(); ++k) a(k) = state.acceleration.data()[index[k]];
-  if (!a.isZero(0.0)) {
-    if (consistent_masses_.empty())
-      consistent_masses_ = elementMasses(element::MassKind::Consistent);
-    scratch.inertia.noalias() = consistent_masses_[e] * a;
-    f += scratch.inertia;
-  }
+  const bool accelerating = !a.isZero(0.0);
+  if (accelerating && consistent_masses_.empty())
+    consistent_masses_ = elementMasses(element::MassKind::Consistent);
   const std::vector<int>& nodes = element.nodes();
   const int last = static_cast<int>(nodes.size()) - 1;
   const auto position = [&](int local) -> Eigen::Vector3d {
@@ -355,51 +339,86 @@ void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scrat
   for (const int end : {0, 1}) {
     const int local = end == 0 ? 0 : last;
     const int next = end == 0 ? 1 : last - 1;
-    const Eigen::Vector3d force = f.segment<3>(3 * local);
+    Eigen::Vector3d force = f.segment<3>(3 * local);
+    if (loaded) force -= p.segment<3>(3 * local);
+    if (damped) force += scratch.damping.segment<3>(3 * local);
+    if (accelerating) force += consistent_masses_[e].middleRows<3>(3 * local) * a;
     const double magnitude = force.norm();
     r.end_tension[end] = force.dot(position(next) - position(local)) > 0.0 ? -magnitude : magnitude;
   }
 }
 
 NodalField Assembler::reactions(const State& state) const {
+  NodalField r;
+  reactions(state, r);
+  return r;
+}
+
+void Assembler::reactions(const State& state, NodalField& r) const {
+  EndForceScratch scratch;
+  reactions(state, scratch, r);
+}
+
+void Assembler::reactions(const State& state, EndForceScratch& scratch, NodalField& r) const {
+  checkMemos(state, scratch);
   Eigen::VectorXd F, P;
-  const Eigen::VectorXd& internal = sameDisplacement(internal_memo_, state)
-                                        ? internal_memo_.assembled
-                                        : (internalForce(state, F, nullptr), F);
+  const Eigen::VectorXd& internal =
+      scratch.internal_memo ? internal_memo_.assembled : (internalForce(state, F, nullptr), F);
   const Eigen::VectorXd& external =
-      sameState(external_memo_, state) ? external_memo_.assembled : (externalLoad(state, P), P);
+      scratch.external_memo ? external_memo_.assembled : (externalLoad(state, P), P);
   Eigen::VectorXd viscous;  // only for a model with internal damping
   if (hasDamping()) dampingForce(state, viscous, nullptr);
-  NodalField r = NodalField::Zero(3, model_.nodeCount());
+  r.setZero(3, model_.nodeCount());
   for (int n = 0; n < model_.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k)
       if (model_.isConstrained(n, k))
         r(k, n) =
             internal(3 * n + k) + (viscous.size() ? viscous(3 * n + k) : 0.0) - external(3 * n + k);
-  return r;
 }
 
-element::ElementResult Assembler::elementResult(const State& state, int e,
-                                                EndForceScratch& scratch) const {
-  element::ElementResult r = model_.element(e).result(context(state, e));
+void Assembler::results(const State& state, std::vector<element::ElementResult>& elements,
+                        NodalField& reactions) const {
+  results_scratch_.checked = false;  // a new sweep: the memos are asked again
+  elements.resize(model_.elementCount());
+  for (int e = 0; e < model_.elementCount(); ++e)
+    elementResult(state, e, results_scratch_, elements[e]);
+  this->reactions(state, results_scratch_, reactions);
+}
+
+void Assembler::checkMemos(const State& state, EndForceScratch& scratch) const {
+  if (scratch.checked) return;
+  scratch.internal_memo = sameDisplacement(internal_memo_, state);
+  scratch.external_memo = sameState(external_memo_, state);
+  scratch.checked = true;
+}
+
+void Assembler::elementResult(const State& state, int e, EndForceScratch& scratch,
+                              element::ElementResult& r) const {
+  model_.element(e).result(context(state, e), r);
   const bool line = model_.element(e).nodes().size() >= 2 && !r.point_tension.empty() &&
                     r.point_resultant.empty();
   if (line) setEndTensions(state, e, scratch, r);
-  return r;
 }
 
 element::ElementResult Assembler::elementResult(const State& state, int e) const {
   EndForceScratch scratch;
-  return elementResult(state, e, scratch);
+  element::ElementResult r;
+  elementResult(state, e, scratch, r);
+  return r;
 }
 
 std::vector<element::ElementResult> Assembler::elementResults(const State& state) const {
   std::vector<element::ElementResult> results;
-  results.reserve(model_.elementCount());
-  EndForceScratch scratch;  // sized by the first element, reused by the next ones
-  for (int e = 0; e < model_.elementCount(); ++e)
-    results.push_back(elementResult(state, e, scratch));
+  elementResults(state, results);
   return results;
+}
+
+void Assembler::elementResults(const State& state,
+                               std::vector<element::ElementResult>& results) const {
+  results.resize(model_.elementCount());
+  results_scratch_.checked = false;  // a new sweep: the memos are asked again
+  for (int e = 0; e < model_.elementCount(); ++e)
+    elementResult(state, e, results_scratch_, results[e]);
 }
 
 }  // namespace flexmoor::model

@@ -62,11 +62,19 @@ class Assembler {
   // nodes from its nodal force balance (see setEndTensions); its point tensions stay the
   // element's own, from the strain.
   std::vector<element::ElementResult> elementResults(const State& state) const;
+  // The same into `results`, whose storage is reused.
+  void elementResults(const State& state, std::vector<element::ElementResult>& results) const;
   // Element e's result alone (0-based), as elementResults gives it: what a quantity of one
   // element needs in every time step.
   element::ElementResult elementResult(const State& state, int e) const;
   // Support reactions F + F_d - P at the constrained dofs (inertia not included), zero elsewhere.
   NodalField reactions(const State& state) const;
+  // The same into `r`, whose storage is reused.
+  void reactions(const State& state, NodalField& r) const;
+  // elementResults and reactions of one state in one sweep, into storage that is reused: what a
+  // result record needs.
+  void results(const State& state, std::vector<element::ElementResult>& elements,
+               NodalField& reactions) const;
 
  private:
   element::ElementContext context(const State& state, int e) const {
@@ -84,12 +92,15 @@ class Assembler {
   // Work space of one sweep over the elements at one state, and whether the memos below hold
   // that state's forces (asked once a sweep).
   struct EndForceScratch {
-    Eigen::VectorXd force, load, acceleration, inertia, damping;
+    Eigen::VectorXd force, load, acceleration, damping;
     bool checked = false, internal_memo = false, external_memo = false;
   };
+  void checkMemos(const State& state, EndForceScratch& scratch) const;
+  void reactions(const State& state, EndForceScratch& scratch, NodalField& r) const;
   void setEndTensions(const State& state, int e, EndForceScratch& scratch,
                       element::ElementResult& r) const;
-  element::ElementResult elementResult(const State& state, int e, EndForceScratch& scratch) const;
+  void elementResult(const State& state, int e, EndForceScratch& scratch,
+                     element::ElementResult& r) const;
 
   // The last internal force and external load computed, assembled and per element, with the
   // state they belong to. A record of an accepted time step asks for the forces of the very
@@ -116,6 +127,7 @@ class Assembler {
   // Consistent element masses for the end-force balance, computed on first use (total
   // Lagrangian: they depend on the reference configuration only).
   mutable std::vector<Eigen::MatrixXd> consistent_masses_;
+  mutable EndForceScratch results_scratch_;  // elementResults' work space, kept between calls
   mutable ForceMemo internal_memo_, external_memo_;
 };
 

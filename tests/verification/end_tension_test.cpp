@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "libstruct/element/cable_element.hpp"
 #include "libstruct/model/assembler.hpp"
 #include "libstruct/shape/gauss_legendre.hpp"
 #include "libstruct/solve/newmark.hpp"
@@ -27,6 +28,12 @@ struct EndTensionErrors {
   double strain_pin = 0.0;     // the element's own axial force from the strain at xi = -1
   double point_tension = 0.0;  // largest relative error of the Gauss-point tensions
 };
+
+// A cable element's axial force from its strain at xi.
+template <int N>
+double strainTension(const element::Element& e, const element::ElementContext& c, double xi) {
+  return dynamic_cast<const element::CableElement<N>&>(e).axialForceAt(c, xi);
+}
 
 // Example 1's cable (L0 = 200 ft, EA = 1e5 lbf, w = 0.1 lbf/ft, H = 5.8 lbf: EA / T ~ 1e4), hung by
 // viscous relaxation and then Newton to a residual of 1e-12.
@@ -57,8 +64,11 @@ EndTensionErrors hangAndMeasure(int elements, int nodes_per_element) {
                          std::abs(results[k + 1].end_tension[0] / T - 1.0)});
   }
   const model::Model& m = *cable.model;
-  e.strain_pin =
-      std::abs(m.element(0).result({m.reference(), state, 0}).end_tension[0] / T_end - 1);
+  const element::ElementContext first{m.reference(), state, 0};
+  const double strain_end = nodes_per_element == 2   ? strainTension<2>(m.element(0), first, -1.0)
+                            : nodes_per_element == 3 ? strainTension<3>(m.element(0), first, -1.0)
+                                                     : strainTension<4>(m.element(0), first, -1.0);
+  e.strain_pin = std::abs(strain_end / T_end - 1);
   // Gauss points: T at the point's unstretched arc length (reference elements are straight and
   // uniformly parametrised, so s = (k + (1 + xi) / 2) h0).
   const auto& rule = shape::gaussLegendre(nodes_per_element);

@@ -193,7 +193,7 @@ TEST(Spring, TangentMatchesFiniteDifference) {
     for (const double scale : {1.3, 0.7}) {
       const model::State state = displacedState(X, scale);
       const element::SpringElement spring(0, 1, 450.0, rest, Compression::Carry);
-      const double force = spring.result({X, state, 0}).end_tension[0];
+      const double force = spring.result({X, state, 0}).point_tension[0];
       const double l0 = rest < 0.0 ? length : rest;
       const double l =
           (X.col(1) + state.displacement.col(1) - X.col(0) - state.displacement.col(0)).norm();
