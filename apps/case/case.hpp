@@ -67,6 +67,7 @@ struct SummarySpec {
     EndTension,         // force on one end point of an element (its nodal force balance)
     MaxTension,         // largest end tension over all elements
     Frequency,          // omega of mode `mode` (1-based) of a modes step, rad/s
+    Period,             // 2 pi / omega of that mode, s
     ResultantMax,       // larger principal membrane stress resultant, mean over the element's
                         // integration points (force per current length)
     ResultantMin,       // smaller principal resultant, likewise

@@ -65,6 +65,17 @@ struct PendingCable {
   std::string where;  // "lines[2]"
 };
 
+// One item of `loads: enclosed_fluid:` as read (read_enclosed_fluid.cpp): the liquid in the
+// membranes of `on:`; its density is resolved and it is put on the model once the water is read.
+struct EnclosedFluidSpec {
+  std::vector<int> elements;
+  std::optional<double> density, specific_gravity;  // exactly one of them
+  double pressure = 0.0;
+  std::optional<double> at_z;
+  int line = 0;
+  std::string where;  // "loads.enclosed_fluid[0]"
+};
+
 struct CaseBuilder {
   CaseBuilder(Diagnostics& diag, UnitSystem units, Case& result)
       : in(diag, units), diag(diag), c(result), model(*result.model) {}
@@ -96,6 +107,7 @@ struct CaseBuilder {
   std::unordered_map<long long, int> support_line;
   bool gravity_given = false;  // `loads: gravity` (the water takes its magnitude)
   HydroSpec hydro;             // the ocean sections (read_hydro.cpp)
+  std::vector<EnclosedFluidSpec> enclosed_fluids;  // read with loads: (read_enclosed_fluid.cpp)
 
   std::set<std::pair<int, int>> released;  // (node, component) freed by a step's release:
   // Adds a node with the next free id (after the largest so far).
@@ -134,6 +146,15 @@ void readLoads(CaseBuilder& b, const YAML::Node& n);
 // water:, waves:, current:, seabed: and bodies: of the top-level map, into b.hydro; a body's mass
 // becomes a point_mass element. Also refuses a section's hydro: without water.
 void readOcean(CaseBuilder& b, const Fields& top);
+// One item of `loads: enclosed_fluid:`, and the liquids of them all put on the model (their
+// pressure and lumped mass, libhydro/loads/enclosed_fluid.hpp) after readOcean
+// (read_enclosed_fluid.cpp).
+void readEnclosedFluid(CaseBuilder& b, const YAML::Node& item, const std::string& path);
+void addEnclosedFluids(CaseBuilder& b);
+// The membranes of the surfaces that `on:` names (one surface or a list); nullopt when a name is
+// unknown (reported) or broken (read_conditions.cpp).
+std::optional<std::vector<int>> surfaceMembranes(CaseBuilder& b, const YAML::Node& on,
+                                                 const std::string& path);
 void readSteps(CaseBuilder& b, const YAML::Node& n);
 void readSummary(CaseBuilder& b, const YAML::Node& n);
 void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp

@@ -87,6 +87,7 @@ Case readCase(const std::string& path) {
   readSupports(b, section("supports"));
   readLoads(b, section("loads"));
   readOcean(b, top);
+  addEnclosedFluids(b);
   if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
   readSummary(b, section("summary"));
   readFigure(b, section("figure"));

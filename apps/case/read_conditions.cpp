@@ -96,8 +96,9 @@ void readNodalLoad(CaseBuilder& b, const YAML::Node& item, const std::string& pa
   for (int node : *nodes) b.model.addNodalLoad(node, *force, history);
 }
 
-// The membranes of the surfaces that `on:` names (one surface or a list); nullopt when a name is
-// unknown (reported) or broken.
+}  // namespace
+
+// The membranes of the surfaces that `on:` names (case_builder.hpp).
 std::optional<std::vector<int>> surfaceMembranes(CaseBuilder& b, const YAML::Node& on,
                                                  const std::string& path) {
   std::vector<int> elements;
@@ -119,6 +120,8 @@ std::optional<std::vector<int>> surfaceMembranes(CaseBuilder& b, const YAML::Nod
   if (!ok) return std::nullopt;
   return elements;
 }
+
+namespace {
 
 // A follower pressure (Eq. 3.30-3.37) on the membranes of surfaces: `on: SURFACE` or a list of
 // surfaces, acting along the surface normal (s-direction x t-direction of its parameters).
@@ -195,7 +198,7 @@ void readSupports(CaseBuilder& b, const YAML::Node& n) {
 }
 
 void readLoads(CaseBuilder& b, const YAML::Node& n) {
-  Fields f(b.diag, n, "loads", {"gravity", "nodal", "pressure", "wave_pressure"});
+  Fields f(b.diag, n, "loads", {"gravity", "nodal", "pressure", "wave_pressure", "enclosed_fluid"});
   if (const YAML::Node* g = f.find("gravity")) readGravity(b, *g, f.path("gravity"));
   if (const YAML::Node* nodal = f.find("nodal")) {
     const std::vector<YAML::Node> items = listItems(b.diag, *nodal, f.path("nodal"));
@@ -211,6 +214,11 @@ void readLoads(CaseBuilder& b, const YAML::Node& n) {
     const std::vector<YAML::Node> items = listItems(b.diag, *wave, f.path("wave_pressure"));
     for (size_t i = 0; i < items.size(); ++i)
       readWavePressure(b, items[i], itemPath(f.path("wave_pressure"), i));
+  }
+  if (const YAML::Node* fluid = f.find("enclosed_fluid")) {
+    const std::vector<YAML::Node> items = listItems(b.diag, *fluid, f.path("enclosed_fluid"));
+    for (size_t i = 0; i < items.size(); ++i)
+      readEnclosedFluid(b, items[i], itemPath(f.path("enclosed_fluid"), i));
   }
 }
 

@@ -15,7 +15,7 @@ enum class Target { Node, ElementEnd, Membrane, Mode, Model };
 
 // The unit a quantity is reported in. A support reaction of an axisymmetric model is per radian
 // of circumference, like every force of its meridian (a hoop cable's tension is a whole force).
-enum class Measure { Length, Velocity, Force, Reaction, ForcePerLength, AngularFrequency };
+enum class Measure { Length, Velocity, Force, Reaction, ForcePerLength, AngularFrequency, Time };
 
 struct QuantityInfo {
   Quantity quantity;
@@ -46,6 +46,8 @@ std::string unitOf(Measure m, UnitSystem system, bool per_radian) {
       return units.force + "/" + units.length;
     case Measure::AngularFrequency:
       return "rad/s";
+    case Measure::Time:
+      return units.time;
   }
   return "";
 }
@@ -63,6 +65,8 @@ Dimension dimensionOf(Measure m) {
       return {1, 0, -2};
     case Measure::AngularFrequency:
       return {0, 0, -1};
+    case Measure::Time:
+      return kind::kTime.dimension;
   }
   return {};
 }
@@ -110,6 +114,7 @@ const std::vector<std::pair<std::string, QuantityInfo>>& quantities() {
       {"resultant_max", {Quantity::ResultantMax, 0, Measure::ForcePerLength, Target::Membrane}},
       {"resultant_min", {Quantity::ResultantMin, 0, Measure::ForcePerLength, Target::Membrane}},
       {"frequency", {Quantity::Frequency, 0, Measure::AngularFrequency, Target::Mode}},
+      {"period", {Quantity::Period, 0, Measure::Time, Target::Mode}},
   };
   return table;
 }

@@ -58,7 +58,8 @@ const std::vector<std::string>& keysOf(SurfaceShape shape) {
     return more;
   };
   static const std::vector<std::string> rectangle = with({"corner", "side1", "side2"});
-  static const std::vector<std::string> cylinder = with({"centre", "radius", "length", "angles"});
+  static const std::vector<std::string> cylinder =
+      with({"centre", "radius", "length", "angles", "axis"});
   static const std::vector<std::string> disc = with({"centre", "radius", "angles"});
   static const std::vector<std::string> meridian = {"name", "shape",    "section", "from",
                                                     "to",   "elements", "order",   "cables"};
@@ -102,9 +103,14 @@ bool readGeometry(CaseBuilder& b, Fields& f, SurfaceSpec& s) {
       }
       return ok;
     }
-    case SurfaceShape::Cylinder:
+    case SurfaceShape::Cylinder: {
+      const YAML::Node* axis = f.find("axis");
+      const auto k =
+          axis ? in.choice<int>(*axis, f.path("axis"), {{"x", 0}, {"y", 1}, {"z", 2}}) : 2;
+      if (k) m.axis = *k;
       return vector("centre", m.origin) & positive("radius", m.radius) &
-             positive("length", m.length) & readAngles(b, f, m);
+             positive("length", m.length) & readAngles(b, f, m) & k.has_value();
+    }
     case SurfaceShape::Disc:
       return vector("centre", m.origin) & positive("radius", m.radius) & readAngles(b, f, m);
     case SurfaceShape::Meridian: {

@@ -15,6 +15,7 @@ struct Scenario {
 
 const Scenario kScenarios[] = {
     {"single_point_moor", expandSinglePointMoor},
+    {"submerged_tube", expandSubmergedTube},
 };
 
 std::string scenarioNames() {

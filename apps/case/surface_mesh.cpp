@@ -108,8 +108,11 @@ Eigen::Vector3d SurfaceMap::operator()(double s, double t) const {
       return origin + s * side1 + t * side2;
     case SurfaceShape::Cylinder: {
       const double theta = theta0 + s * (theta1 - theta0);
-      return origin +
-             Eigen::Vector3d(radius * std::cos(theta), radius * std::sin(theta), t * length);
+      Eigen::Vector3d p;  // in the cyclic frame (e1, e2, axis)
+      p((axis + 1) % 3) = radius * std::cos(theta);
+      p((axis + 2) % 3) = radius * std::sin(theta);
+      p(axis) = t * length;
+      return origin + p;
     }
     case SurfaceShape::Disc: {
       const double theta = theta0 + t * (theta1 - theta0);

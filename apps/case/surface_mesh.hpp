@@ -2,7 +2,10 @@
 // The membrane meshes a case file's surfaces: generate (read_surfaces.cpp reads them). Each surface
 // maps the unit square of parameters (s, t) onto
 //   rectangle  corner + s side1 + t side2
-//   cylinder   centre + (R cos theta, R sin theta, t length), theta from angles[0] to angles[1]
+//   cylinder   centre + (R cos theta, R sin theta, t length), theta from angles[0] to angles[1],
+//              in the frame (e1, e2, axis) of its axis: (x, y, z) for axis z (the default),
+//              (y, z, x) for x, (z, x, y) for y (theta = 0 on top, 90 deg at +x); the normal
+//              (around) x (along) points out either way
 //   disc       centre + (s R cos theta, s R sin theta, 0), theta likewise (triangles only)
 //   meridian   from + s (to - from), a meridian in the x-z plane swept about the z axis
 //              (axisymmetric membrane elements; its nodes' y dofs are fixed)
@@ -40,6 +43,7 @@ struct SurfaceMap {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero(), side1 = Eigen::Vector3d::Zero(),
                   side2 = Eigen::Vector3d::Zero();
   double radius = 0.0, length = 0.0, theta0 = 0.0, theta1 = 2.0 * M_PI;
+  int axis = 2;  // cylinder: 0, 1, 2 = x, y, z
 
   Eigen::Vector3d operator()(double s, double t) const;
   double size() const { return std::max({side1.norm(), side2.norm(), radius, length}); }

@@ -93,10 +93,12 @@ double unscaled(const SummarySpec& spec, const model::Model& model, const Summar
       return elementResult(spec, model, source).end_tension[spec.end];
     case Q::MaxTension:
       return maxTension(spec, model, source);
-    case Q::Frequency: {
+    case Q::Frequency:
+    case Q::Period: {
       const std::vector<double>& omega = source.frequencies();
       requireIndex(spec.mode - 1, static_cast<int>(omega.size()), spec, "mode (0-based)");
-      return omega[spec.mode - 1];
+      const double w = omega[spec.mode - 1];
+      return spec.quantity == Q::Frequency ? w : 2.0 * std::acos(-1.0) / w;
     }
     case Q::ResultantMax:
       return principalResultants(spec, model, source).first;

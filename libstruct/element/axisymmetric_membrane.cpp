@@ -84,19 +84,31 @@ void AxisymmetricMembrane<N>::internalForce(const ElementContext& c, Eigen::Vect
 }
 
 template <int N>
-void AxisymmetricMembrane<N>::mass(const ElementContext& c, MassKind kind,
-                                   Eigen::MatrixXd& M) const {
+Eigen::Matrix<double, N, N> AxisymmetricMembrane<N>::areaMatrix(const Coordinates& X) const {
   using L = shape::Lagrange1D<N>;
-  Coordinates X, Y;
-  gather(c, X, Y);
   Eigen::Matrix<double, N, N> m = Eigen::Matrix<double, N, N>::Zero();
   for (int q = 0; q < rule_.size(); ++q) {
     const typename L::Vector Lv = L::values(rule_.points[q]);
     const double dA =
         (X * L::derivatives(rule_.points[q])).norm() * X.row(0).dot(Lv) * rule_.weights[q];
-    m += (section_.density * section_.thickness * dA) * (Lv * Lv.transpose());  // Eq. 4.40
+    m += dA * (Lv * Lv.transpose());
   }
-  nodalMass<N>(m, kind, M);
+  return m;
+}
+
+template <int N>
+void AxisymmetricMembrane<N>::mass(const ElementContext& c, MassKind kind,
+                                   Eigen::MatrixXd& M) const {
+  Coordinates X, Y;
+  gather(c, X, Y);
+  nodalMass<N>((section_.density * section_.thickness) * areaMatrix(X), kind, M);  // Eq. 4.40
+}
+
+template <int N>
+Eigen::VectorXd AxisymmetricMembrane<N>::nodalAreas(const model::NodalField& X) const {
+  Coordinates Xe;
+  for (int I = 0; I < N; ++I) Xe.col(I) = X.col(nodes()[I]);
+  return lumpedDiagonal<N>(areaMatrix(Xe));
 }
 
 template <int N>

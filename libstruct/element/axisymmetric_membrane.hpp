@@ -29,10 +29,14 @@ class AxisymmetricMembrane final : public Element {
   void result(const ElementContext& c, ElementResult& out) const override;
   // The meridian's, and the radius r / D at each integration point (the hoop metric is r^2).
   double minRelativeJacobian(const model::NodalField& X) const override;
+  Eigen::VectorXd nodalAreas(const model::NodalField& X) const override;  // per radian
 
  private:
   using Coordinates = Eigen::Matrix<double, 3, N>;
   void gather(const ElementContext& c, Coordinates& X, Coordinates& Y) const;
+  // int L^I L^J r ds over the reference meridian X (the mass matrix per unit rho h per radian,
+  // Eq. 4.40).
+  Eigen::Matrix<double, N, N> areaMatrix(const Coordinates& X) const;
   MembraneSection section_;
   const shape::QuadratureRule1D& rule_;  // Gauss-Legendre, along the element
 };

@@ -127,6 +127,13 @@ class Element {
     result(c, r);
     return r;
   }
+  // The reference area each node carries: the element's area shared out as its HRZ-lumped mass
+  // is (nodal_mass.hpp), so every share is positive (per radian for axisymmetric elements). What
+  // a quantity spread over the surface (a mass per unit area) puts on each node. Elements that
+  // are not surfaces: zeros.
+  virtual Eigen::VectorXd nodalAreas(const model::NodalField&) const {
+    return Eigen::VectorXd::Zero(static_cast<Eigen::Index>(nodes_.size()));
+  }
   // The smallest Jacobian of the map from natural coordinates to the reference geometry X over
   // the element's integration points, relative to a regular element of its size
   // (reference_jacobian.hpp): <= 0 when the element is folded, inverted or collapsed. Elements

@@ -91,19 +91,32 @@ void MembraneElement<Shape>::internalForce(const ElementContext& c, Eigen::Vecto
 }
 
 template <class Shape>
-void MembraneElement<Shape>::mass(const ElementContext& c, MassKind kind,
-                                  Eigen::MatrixXd& M) const {
-  Coordinates X, Y;
-  gather(c, X, Y);
+typename MembraneElement<Shape>::AreaMatrix MembraneElement<Shape>::areaMatrix(
+    const Coordinates& X) const {
   Eigen::Matrix<double, N, N> m = Eigen::Matrix<double, N, N>::Zero();
   for (int q = 0; q < rule_.size(); ++q) {
     const Eigen::Vector2d& p = rule_.points[q];
     const typename Shape::Values Mv = Shape::values(p.x(), p.y());
     const Eigen::Matrix<double, 3, 2> x = X * Shape::derivatives(p.x(), p.y());
     const double dA = std::sqrt((x.transpose() * x).determinant()) * rule_.weights[q];
-    m += (section_.density * section_.thickness * dA) * (Mv * Mv.transpose());  // Eq. 4.40
+    m += dA * (Mv * Mv.transpose());
   }
-  nodalMass<N>(m, kind, M);
+  return m;
+}
+
+template <class Shape>
+void MembraneElement<Shape>::mass(const ElementContext& c, MassKind kind,
+                                  Eigen::MatrixXd& M) const {
+  Coordinates X, Y;
+  gather(c, X, Y);
+  nodalMass<N>((section_.density * section_.thickness) * areaMatrix(X), kind, M);  // Eq. 4.40
+}
+
+template <class Shape>
+Eigen::VectorXd MembraneElement<Shape>::nodalAreas(const model::NodalField& X) const {
+  Coordinates Xe;
+  for (int I = 0; I < N; ++I) Xe.col(I) = X.col(nodes()[I]);
+  return lumpedDiagonal<N>(areaMatrix(Xe));
 }
 
 template <class Shape>

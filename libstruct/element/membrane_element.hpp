@@ -33,11 +33,15 @@ class MembraneElement final : public Element {
   using Element::result;
   void result(const ElementContext& c, ElementResult& out) const override;
   double minRelativeJacobian(const model::NodalField& X) const override;
+  Eigen::VectorXd nodalAreas(const model::NodalField& X) const override;
 
  private:
   static constexpr int N = Shape::Values::RowsAtCompileTime;
   using Coordinates = Eigen::Matrix<double, 3, N>;
+  using AreaMatrix = Eigen::Matrix<double, N, N>;
   void gather(const ElementContext& c, Coordinates& X, Coordinates& Y) const;
+  // int M^I M^J dA over the reference surface X (the mass matrix per unit rho h, Eq. 4.40).
+  AreaMatrix areaMatrix(const Coordinates& X) const;
 
   MembraneSection section_;
   const shape::QuadratureRule2D& rule_;

@@ -8,15 +8,17 @@
 
 namespace flexmoor::element {
 
-// Lumped: row-sum lumping would give negative masses at the corners of higher orders, so the
-// diagonal is scaled to keep the element's total mass instead (HRZ lumping).
+// Lumping: row sums would give negative masses at the corners of higher orders, so the diagonal
+// is scaled to keep the element's total instead (HRZ lumping). Positive at every node.
+template <int N>
+Eigen::Matrix<double, N, 1> lumpedDiagonal(const Eigen::Matrix<double, N, N>& m) {
+  return m.diagonal() * (m.sum() / m.diagonal().sum());
+}
+
 template <int N>
 void nodalMass(const Eigen::Matrix<double, N, N>& m, MassKind kind, Eigen::MatrixXd& M) {
   Eigen::Matrix<double, N, N> used = m;
-  if (kind == MassKind::Lumped) {
-    const Eigen::Matrix<double, N, 1> diagonal = m.diagonal() * (m.sum() / m.diagonal().sum());
-    used = diagonal.asDiagonal();
-  }
+  if (kind == MassKind::Lumped) used = lumpedDiagonal<N>(m).asDiagonal();
   M.setZero(3 * N, 3 * N);
   for (int I = 0; I < N; ++I)
     for (int J = 0; J < N; ++J)

@@ -83,7 +83,8 @@ void SpringElement::result(const ElementContext& c, ElementResult& out) const {
   out.point_tension.push_back(f.tail<3>().dot(chord.normalized()));
 }
 
-PointMassElement::PointMassElement(int node, double mass) : Element({node}), mass_(mass) {}
+PointMassElement::PointMassElement(int node, double mass, bool weighs)
+    : Element({node}), mass_(mass), weighs_(weighs) {}
 
 void PointMassElement::internalForce(const ElementContext&, Eigen::VectorXd& f,
                                      Eigen::MatrixXd* K) const {
@@ -97,7 +98,7 @@ void PointMassElement::mass(const ElementContext&, MassKind, Eigen::MatrixXd& M)
 
 void PointMassElement::bodyLoad(const ElementContext&, const Vector3d& g,
                                 Eigen::VectorXd& p) const {
-  p = mass_ * g;
+  p = weighs_ ? Eigen::VectorXd(mass_ * g) : Eigen::VectorXd::Zero(3);
 }
 
 }  // namespace flexmoor::element

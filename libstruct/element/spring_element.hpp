@@ -32,10 +32,12 @@ class SpringElement final : public Element {
   material::Compression compression_;
 };
 
-// A concentrated mass at one node (a buoy, a clump weight): mass m I and weight m g.
+// A concentrated mass at one node (a buoy, a clump weight): mass m I and weight m g. With
+// `weighs` false, inertia only: a mass whose weight reaches the structure another way (a
+// contained liquid's, through the gradient of its pressure on the walls).
 class PointMassElement final : public Element {
  public:
-  PointMassElement(int node, double mass);
+  PointMassElement(int node, double mass, bool weighs = true);
 
   std::string typeName() const override { return "point_mass"; }
   void internalForce(const ElementContext& c, Eigen::VectorXd& f,
@@ -48,6 +50,7 @@ class PointMassElement final : public Element {
 
  private:
   double mass_;
+  bool weighs_;
 };
 
 }  // namespace flexmoor::element

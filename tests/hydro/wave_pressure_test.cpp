@@ -20,6 +20,7 @@
 #include "libstruct/solve/solve_log.hpp"
 #include "libstruct/solve/static_solver.hpp"
 #include "tests/support/ocean_models.hpp"
+#include "tests/support/surface_load_check.hpp"
 
 namespace flexmoor::test {
 namespace {
@@ -38,26 +39,6 @@ class QuadraticPressure final : public model::SurfaceLoad {
             Vector3d(0.7 + 0.4 * y.y(), 0.4 * y.x(), -1.1)};
   }
 };
-
-// Central differences (step 1e-6) of an element's surface-load forces against its stiffness
-// -df/du: the largest difference relative to the largest entry.
-double surfaceStiffnessError(const element::Element& e, const model::NodalField& X,
-                             const model::State& s, const model::SurfaceLoad& load) {
-  VectorXd f, plus, minus;
-  element::LoadMatrices J;
-  e.surfaceLoad({X, s, 0}, load, f, &J);
-  MatrixXd numeric(J.stiffness.rows(), J.stiffness.cols());
-  const double h = 1e-6;
-  for (int j = 0; j < numeric.cols(); ++j) {
-    model::State sp = s, sm = s;
-    sp.displacement.data()[j] += h;
-    sm.displacement.data()[j] -= h;
-    e.surfaceLoad({X, sp, 0}, load, plus, nullptr);
-    e.surfaceLoad({X, sm, 0}, load, minus, nullptr);
-    numeric.col(j) = -(plus - minus) / (2.0 * h);
-  }
-  return (J.stiffness - numeric).cwiseAbs().maxCoeff() / J.stiffness.cwiseAbs().maxCoeff();
-}
 
 template <class Shape, int N>
 double curvedElementError(const std::string& shape, const model::SurfaceLoad& load,
