@@ -157,8 +157,8 @@ TEST(CatenaryLine, FrictionMatchesItsClosedForm) {
 
 // A start that never fails: every line of a grid from very slack (L = 1.6 chord) to 5% too
 // short, with and without the seabed, solves to the spans' 1e-12 of L (checked 1e-9 at the
-// profile's end) in at most 30 Newton iterations (measured 14 at most); on the seabed, a line longer than its span plus its fairlead's height would
-// lie slack on the bed and is refused.
+// profile's end) in at most 30 Newton iterations (measured 14 at most); on the seabed, a line
+// longer than its span plus its fairlead's height would lie slack on the bed and is refused.
 TEST(CatenaryLine, SolvesEveryLineOfAGrid) {
   CatenaryLineInputs in = oc3();
   for (bool seabed : {true, false})
