@@ -65,6 +65,17 @@ struct PendingCable {
   std::string where;  // "lines[2]"
 };
 
+// A line's `initial_shape: catenary` (read_initial_shape.cpp): its nodes start on the elastic
+// catenary between where its supports put its ends (build_initial_shape.cpp).
+struct InitialShapeSpec {
+  std::vector<int> nodes;  // the line's, start to end
+  const SectionSpec* section = nullptr;
+  double friction = 0.0;    // C_B on the laid part (the static FE has no friction: default 0)
+  double max_strain = 0.1;  // hydro::CatenaryLineInputs::max_strain
+  int line = 0;
+  std::string where;  // "lines[2].initial_shape"
+};
+
 struct CaseBuilder {
   CaseBuilder(Diagnostics& diag, UnitSystem units, Case& result)
       : in(diag, units), diag(diag), c(result), model(*result.model) {}
@@ -94,8 +105,9 @@ struct CaseBuilder {
   // The support that fixed each dof first (3 * node + component -> line), to refuse a second
   // one that prescribes another value.
   std::unordered_map<long long, int> support_line;
-  bool gravity_given = false;  // `loads: gravity` (the water takes its magnitude)
-  HydroSpec hydro;             // the ocean sections (read_hydro.cpp)
+  bool gravity_given = false;                    // `loads: gravity` (the water takes its magnitude)
+  HydroSpec hydro;                               // the ocean sections (read_hydro.cpp)
+  std::vector<InitialShapeSpec> initial_shapes;  // of the lines that give one
 
   std::set<std::pair<int, int>> released;  // (node, component) freed by a step's release:
   // Adds a node with the next free id (after the largest so far).
@@ -142,6 +154,14 @@ void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp
 // nodes, steps that need a mass or more dofs than there are. Errors go to the Diagnostics;
 // warnings (the model runs, but perhaps not as meant) too, as warnings.
 void checkModel(CaseBuilder& b);
+// A line's `initial_shape:` (read_initial_shape.cpp), kept in b.initial_shapes.
+void readInitialShape(CaseBuilder& b, const YAML::Node& n, const std::string& path,
+                      const std::vector<int>& nodes, const SectionSpec* section);
+// The start of the lines with an initial_shape: (build_initial_shape.cpp): each one's nodes on
+// the elastic catenary with seabed contact between its ends as its supports place them, as the
+// model's start displacements at load factor 1. Lines that cannot be started are errors at their
+// key. For a valid case only (after checkModel).
+void buildInitialShapes(CaseBuilder& b);
 // The sea of b.hydro and its loads on the model (build_hydro.cpp): Morison loads on the lines of
 // sections with hydro:, the bodies' loads, seabed contact; the sea kept in the Case. For a valid
 // case only (after checkModel).

@@ -40,7 +40,8 @@ std::optional<LineEnd> readLineEnd(CaseBuilder& b, Fields& f, const char* point,
 
 void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   Fields f(b.diag, item, path,
-           {"name", "from", "to", "start_node", "end_node", "elements", "order", "section"});
+           {"name", "from", "to", "start_node", "end_node", "elements", "order", "section",
+            "initial_shape"});
   std::string name;
   if (const YAML::Node* n = f.find("name")) {
     name = b.in.text(*n, f.path("name")).value_or("");
@@ -83,6 +84,8 @@ void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
       b.line_cables.push_back(
           {std::vector<int>(first, first + order), ns->Scalar(), lineOf(item), path});
     }
+  if (const YAML::Node* shape = f.find("initial_shape"))
+    readInitialShape(b, *shape, f.path("initial_shape"), nodes, section);
   if (!name.empty()) b.c.lines[name] = std::move(nodes);
 }
 
