@@ -38,11 +38,6 @@ void startOnCatenary(CaseBuilder& b, const InitialShapeSpec& spec) {
     return;
   }
   const element::CableSection& section = spec.section->section;
-  double buoyancy = 0.0;  // per unstretched length, of the submerged line
-  if (h.has_water && spec.section->hydro) {
-    const double d = spec.section->hydro->coefficients.diameter;
-    buoyancy = h.water.density * M_PI * d * d / 4.0;
-  }
   const int first = spec.nodes.front(), last = spec.nodes.back();
   const bool start_is_anchor = startPosition(m, first).z() <= startPosition(m, last).z();
   const int anchor_node = start_is_anchor ? first : last;
@@ -70,7 +65,7 @@ void startOnCatenary(CaseBuilder& b, const InitialShapeSpec& spec) {
   in.horizontal_span = span.head<2>().norm();
   in.vertical_span = span.z();
   in.unstretched_length = (m.reference().col(last) - m.reference().col(first)).norm();
-  in.weight = g.norm() * (section.density * section.area - buoyancy);
+  in.weight = submergedWeightPerLength(b, *spec.section);
   in.axial_stiffness = section.material->initialModulus() * section.area;
   in.seabed = on_bed;
   in.friction = spec.friction;
@@ -92,6 +87,15 @@ void startOnCatenary(CaseBuilder& b, const InitialShapeSpec& spec) {
 }
 
 }  // namespace
+
+double submergedWeightPerLength(const CaseBuilder& b, const SectionSpec& section) {
+  double buoyancy = 0.0;  // mass of the displaced water per unstretched length
+  if (b.hydro.has_water && section.hydro) {
+    const double d = section.hydro->coefficients.diameter;
+    buoyancy = b.hydro.water.density * M_PI * d * d / 4.0;
+  }
+  return b.model.gravity().norm() * (section.section.density * section.section.area - buoyancy);
+}
 
 void buildInitialShapes(CaseBuilder& b) {
   for (const InitialShapeSpec& spec : b.initial_shapes) startOnCatenary(b, spec);

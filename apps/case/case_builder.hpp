@@ -63,6 +63,7 @@ struct PendingCable {
   std::string section;
   int line = 0;
   std::string where;  // "lines[2]"
+  std::string name;   // the line's name, "" for none
 };
 
 // A line's `initial_shape: catenary` (read_initial_shape.cpp): its nodes start on the elastic
@@ -93,6 +94,7 @@ struct CaseBuilder {
   std::map<std::string, std::optional<SectionSpec>> sections;  // nullopt: broken
   std::set<std::string> broken_node_names;  // lines and node sets defined with errors
   std::vector<PendingCable> line_cables;
+  std::map<std::string, std::vector<int>> line_elements;  // the elements of each named line
   // Membrane law of each material (null: broken, or linear_elastic without nu).
   std::map<std::string, std::shared_ptr<const material::MembraneMaterial>> membrane_materials;
   std::vector<PendingSurface> surface_elements;
@@ -157,6 +159,9 @@ void checkModel(CaseBuilder& b);
 // A line's `initial_shape:` (read_initial_shape.cpp), kept in b.initial_shapes.
 void readInitialShape(CaseBuilder& b, const YAML::Node& n, const std::string& path,
                       const std::vector<int>& nodes, const SectionSpec* section);
+// The weight per unstretched length of a line of this section in the case's gravity, less its
+// buoyancy rho_w g pi d^2 / 4 where the section has hydro: in water (build_initial_shape.cpp).
+double submergedWeightPerLength(const CaseBuilder& b, const SectionSpec& section);
 // The start of the lines with an initial_shape: (build_initial_shape.cpp): each one's nodes on
 // the elastic catenary with seabed contact between its ends as its supports place them, as the
 // model's start displacements at load factor 1. Lines that cannot be started are errors at their

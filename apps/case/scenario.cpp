@@ -15,6 +15,7 @@ struct Scenario {
 
 const Scenario kScenarios[] = {
     {"single_point_moor", expandSinglePointMoor},
+    {"spread_mooring", expandSpreadMooring},
 };
 
 std::string scenarioNames() {
