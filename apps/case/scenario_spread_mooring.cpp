@@ -206,9 +206,13 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
     if (!line) continue;
     const auto type = types.find(line->type);
     if (type == types.end()) {
-      if (!top.find("line_types") || !(*top.find("line_types"))[line->type])
+      if (!top.find("line_types") || !(*top.find("line_types"))[line->type]) {
+        std::string names;
+        for (const auto& entry : types) names += (names.empty() ? "" : ", ") + entry.first;
         diag.error(items[i]["type"], path + ".type: unknown line type (got '" + line->type +
-                                         "', expected one of line_types:)");
+                                         "', expected one of line_types: " +
+                                         (names.empty() ? "none defined" : names) + ")");
+      }
       continue;
     }
     if (diag.empty() && checkStart(diag, items[i], path, *line, type->second, rho, g, depth))
