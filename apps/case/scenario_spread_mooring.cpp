@@ -11,6 +11,7 @@
 //   seabed: {stiffness, damping, friction, ...}    # default: MoorDyn's kBot, cBot, no friction
 //   line_types:                                    # one section each
 //     chain: {diameter, mass_per_length, EA, weight_in_water (a check), compression,
+//             strain: engineering (the catenary's and MoorDyn's law; or green, Eq. 2.53),
 //             Cn, Ct, Ca, CaAx, tangential_drag_area, per_length}
 //   mooring_lines:
 //     - {anchor: [x, y, z], fairlead: [x, y, z], length, type: chain, elements: 20, order: 3}
@@ -59,8 +60,8 @@ struct MooringLine {
 std::optional<LineType> readLineType(Input& in, const MapEntry& e, double rho, double g) {
   Diagnostics& diag = in.diag;
   Fields f(diag, e.value, childPath("line_types", e.key),
-           {"diameter", "mass_per_length", "EA", "weight_in_water", "compression", "Cn", "Ct", "Ca",
-            "CaAx", "tangential_drag_area", "per_length"});
+           {"diameter", "mass_per_length", "EA", "weight_in_water", "compression", "strain", "Cn",
+            "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length"});
   const auto need = [&](const char* key, const QuantityKind& kind) {
     const YAML::Node* n = f.require(key);
     return n ? in.quantity(*n, f.path(key), kind, Limit::Positive) : std::nullopt;
@@ -240,6 +241,7 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
     YAML::Node material, section, hydro;
     material["type"] = "linear_elastic";
     material["E"] = scenarioNumber(t.ea / t.area);  // EA over pi d^2 / 4
+    material["strain"] = t.node["strain"] ? t.node["strain"] : YAML::Node("engineering");
     if (const YAML::Node c = t.node["compression"]) material["compression"] = c;
     doc["materials"][name] = material;
     section["material"] = name;

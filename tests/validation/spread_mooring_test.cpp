@@ -42,35 +42,34 @@ MooringLineInputs oc4Line() {
 }
 
 // Each line against the test-side catenary: fairlead tension, H, V and the anchor's force (H on a
-// frictionless bed) within 0.2% (issue 11; measured at most 4.4e-4, OC4's H: the FE law is
-// Green's strain, S = E (stretch^2 - 1) / 2, the catenary's Irvine's T = EA (stretch - 1), a
-// 1.5 strain relative difference in the stretch), the laid length within 0.5 m (measured 0.18 m
-// for OC4, 0.06 m for OC3). The fairlead's end tension (the end element's nodal balance) and the
-// magnitude of its support reaction are one force in statics: 1e-9.
+// frictionless bed) within 1e-4 (issue 11 asks 0.2%; measured at most 4.3e-5, OC4 line 2's
+// anchor, on 20 L4 elements a line with the catenary's law EA (stretch - 1)), the laid length
+// within 0.05 m (measured 0.014 m at most). The fairlead's end tension (the end element's nodal
+// balance) and the magnitude of its support reaction are one force in statics: 1e-9.
 void expectMatchesCatenary(const std::string& json, const MooringLineInputs& in) {
   const MooringLineSolution ref = solveMooringLine(in);
   for (int k = 1; k <= 3; ++k) {
     const LineForces f = line(json, k);
-    EXPECT_NEAR(f.tension / ref.fairlead_tension(), 1.0, 2e-3) << "line " << k;
-    EXPECT_NEAR(f.horizontal / ref.horizontal_force, 1.0, 2e-3) << "line " << k;
-    EXPECT_NEAR(f.vertical / ref.fairlead_vertical, 1.0, 2e-3) << "line " << k;
-    EXPECT_NEAR(f.anchor / ref.horizontal_force, 1.0, 2e-3) << "line " << k;
-    EXPECT_NEAR(f.laid, ref.seabed_length, 0.5) << "line " << k;
+    EXPECT_NEAR(f.tension / ref.fairlead_tension(), 1.0, 1e-4) << "line " << k;
+    EXPECT_NEAR(f.horizontal / ref.horizontal_force, 1.0, 1e-4) << "line " << k;
+    EXPECT_NEAR(f.vertical / ref.fairlead_vertical, 1.0, 1e-4) << "line " << k;
+    EXPECT_NEAR(f.anchor / ref.horizontal_force, 1.0, 1e-4) << "line " << k;
+    EXPECT_NEAR(f.laid, ref.seabed_length, 0.05) << "line " << k;
     EXPECT_NEAR(std::hypot(f.horizontal, f.vertical) / f.tension, 1.0, 1e-9) << "line " << k;
   }
 }
 
 // MAP++ (OpenFAST's regression summary): fairlead H 736,939.3 N, V 535,728.0 N, T 911,089.5 N,
-// 134.785 m on the seabed. Issue 11: the tension within 0.5% (measured +1.4e-4, the forces
-// within 2e-4) and the laid length within 1 m (measured -0.06 m).
+// 134.785 m on the seabed. Issue 11 asks the tension within 0.5% and the laid length within 1 m;
+// held here to 1e-4 (measured +2.3e-5, H +2.6e-5, V +1.7e-5) and 0.05 m (measured -0.013 m).
 TEST(SpreadMooring, Oc3MatchesMapPlusPlus) {
   const std::string json = runNamedCase("oc3-hywind-statics");
   for (int k = 1; k <= 3; ++k) {
     const LineForces f = line(json, k);
-    EXPECT_NEAR(f.tension / 911089.5, 1.0, 5e-3) << "line " << k;
-    EXPECT_NEAR(f.horizontal / 736939.3, 1.0, 5e-3) << "line " << k;
-    EXPECT_NEAR(f.vertical / 535728.0, 1.0, 5e-3) << "line " << k;
-    EXPECT_NEAR(f.laid, 134.785, 1.0) << "line " << k;
+    EXPECT_NEAR(f.tension / 911089.5, 1.0, 1e-4) << "line " << k;
+    EXPECT_NEAR(f.horizontal / 736939.3, 1.0, 1e-4) << "line " << k;
+    EXPECT_NEAR(f.vertical / 535728.0, 1.0, 1e-4) << "line " << k;
+    EXPECT_NEAR(f.laid, 134.785, 0.05) << "line " << k;
   }
   expectMatchesCatenary(json, oc3Line());
 }
@@ -80,7 +79,7 @@ TEST(SpreadMooring, Oc4MatchesTheIndependentCatenary) {
 }
 
 // "Static Newton to equilibrium in a few iterations": from the catenary start, at most 10
-// (measured 7 for OC3, 8 for OC4, one increment at the full load).
+// (measured 8 for OC3, 6 for OC4, one increment at the full load).
 TEST(SpreadMooring, NewtonFromTheCatenaryTakesAFewIterations) {
   for (const char* name : {"oc3-hywind-statics", "oc4-semi-statics"}) {
     const CliRun r = flexmoor(std::string("run ") + name + " -o " + scratch(name).string());
