@@ -8,7 +8,9 @@
 // EA from the material's initial modulus, seabed contact when the case has `seabed:` and the
 // anchor lies on the bed (the bed's height under the anchor taken as flat). A node at reference
 // arc length s from the anchor goes to the catenary's point at s.
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "apps/case/case_builder.hpp"
 #include "libhydro/mooring/catenary_line.hpp"
@@ -98,7 +100,21 @@ double submergedWeightPerLength(const CaseBuilder& b, const SectionSpec& section
 }
 
 void buildInitialShapes(CaseBuilder& b) {
-  for (const InitialShapeSpec& spec : b.initial_shapes) startOnCatenary(b, spec);
+  std::set<int> started;  // nodes of the lines started so far
+  for (const InitialShapeSpec& spec : b.initial_shapes) {
+    const auto shared = std::find_if(spec.nodes.begin(), spec.nodes.end(),
+                                     [&](int n) { return started.count(n) > 0; });
+    if (shared != spec.nodes.end()) {
+      b.diag.error(spec.line, spec.where + ": the line shares node " +
+                                  std::to_string(b.c.node_ids[*shared]) +
+                                  " with another line's catenary start (got two starts for it, "
+                                  "expected lines of their own nodes: multi-segment lines are "
+                                  "not started on a catenary)");
+      continue;
+    }
+    started.insert(spec.nodes.begin(), spec.nodes.end());
+    startOnCatenary(b, spec);
+  }
   if (!b.initial_shapes.empty()) b.model.setStartLoadFactor(1.0);
 }
 

@@ -78,6 +78,25 @@ TEST(SpreadMooring, Oc4MatchesTheIndependentCatenary) {
   expectMatchesCatenary(runNamedCase("oc4-semi-statics"), oc4Line());
 }
 
+// length_on_seabed is the weight the bed and the anchor carry over w; in statics under weight,
+// buoyancy and the bed alone the nodal force balance makes it L - V_F / w (1e-6 m; measured
+// 1.3e-8 m), w from the cases' mass and diameter in 1025 kg/m^3 water at g = 9.80665.
+TEST(SpreadMooring, LengthOnSeabedIsTheWeightTheFairleadDoesNotCarry) {
+  struct Case {
+    const char* name;
+    double length, mass, diameter;
+  };
+  for (const Case& c : {Case{"oc3-hywind-statics", 902.2, 77.7066, 0.09},
+                        Case{"oc4-semi-statics", 835.35, 113.35, 0.0766}}) {
+    const std::string json = runNamedCase(c.name);
+    const double w = (c.mass - 1025.0 * kPi * c.diameter * c.diameter / 4.0) * 9.80665;
+    for (int k = 1; k <= 3; ++k) {
+      const LineForces f = line(json, k);
+      EXPECT_NEAR(f.laid, c.length - f.vertical / w, 1e-6) << c.name << " line " << k;
+    }
+  }
+}
+
 // "Static Newton to equilibrium in a few iterations": from the catenary start, at most 10
 // (measured 8 for OC3, 6 for OC4, one increment at the full load).
 TEST(SpreadMooring, NewtonFromTheCatenaryTakesAFewIterations) {
