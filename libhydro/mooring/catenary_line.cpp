@@ -37,7 +37,7 @@ Spans spans(const CatenaryLineInputs& in, double H, double V) {
   const double w = in.weight, L = in.unstretched_length, EA = in.axial_stiffness;
   const double a = V / H, ra = std::sqrt(1.0 + a * a);
   Spans s;
-  if (onSeabed(in, V)) {  // Eq. 4-10
+  if (onSeabed(in, V)) {  // partly on the seabed, friction on the laid part
     const double laid = L - V / w;
     const double cw = in.friction * w;
     const double start = cw > 0.0 ? laid - H / cw : -1.0;  // s0 of the friction term
@@ -56,7 +56,7 @@ Spans spans(const CatenaryLineInputs& in, double H, double V) {
         -1.0 / w + 1.0 / (w * ra) + dfdV, (1.0 / ra - 1.0) / w, a / (w * ra) + V / (EA * w);
     return s;
   }
-  const double b = (V - w * L) / H, rb = std::sqrt(1.0 + b * b);  // Eq. 4-7
+  const double b = (V - w * L) / H, rb = std::sqrt(1.0 + b * b);  // suspended
   s.value = {H / w * (std::asinh(a) - std::asinh(b)) + H * L / EA,
              H / w * (ra - rb) + (V * L - 0.5 * w * L * L) / EA};
   s.jacobian << (std::asinh(a) - std::asinh(b)) / w - (a / ra - b / rb) / w + L / EA,

@@ -1,7 +1,7 @@
 #pragma once
 // One elastic catenary mooring line from an anchor to a fairlead, quasi-static, with seabed
 // contact and Coulomb friction on the laid part: the two-equation solve of MAP++ (Jonkman 2007,
-// NREL/TP-500-41958, sec. 4.2, Eq. 4-7 suspended, Eq. 4-10 with the seabed; Irvine's linear law
+// NREL/TP-500-41958, sec. 4.2: the suspended and the seabed-contact equations; Irvine's linear law
 // T = EA (stretch - 1), w the submerged weight per unstretched length, C_B the seabed friction
 // coefficient). In the line's vertical plane, x along the span from the anchor, z up from it.
 //

@@ -126,7 +126,7 @@ TEST(CatenaryLine, FullyLaidLineMatchesItsClosedForm) {
   expectProfileConsistent(line);
 }
 
-// Friction on the laid part (Jonkman's Eq. 4-10 term): the anchor feels H - C_B w L_B (or 0),
+// Friction on the laid part (the C_B term of Jonkman's seabed equation): the anchor feels H - C_B w L_B (or 0),
 // the laid part stretches by int T / EA (closed form below), and the suspended rest is the
 // frictionless line from the touchdown point, which the test-side solver finds on its own. Both
 // branches: the whole laid part in tension (C_B = 1), and its tension reaching zero (C_B = 8 on a
