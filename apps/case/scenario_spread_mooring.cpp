@@ -23,7 +23,10 @@
 // line_k.end. The default
 // summary: per line, fairlead_tension_k and anchor_tension_k (the force on the end point from the
 // end element's nodal force balance, end_tension), fairlead_horizontal_k and fairlead_vertical_k
-// (the fairlead support's reaction) and length_on_seabed_k.
+// (the fairlead support's reaction: the upward pull that holds the line), anchor_horizontal_k and
+// anchor_vertical_k (the line's pull on the anchor, upward +: an uplift; a laid line's anchor,
+// held at the bed's level, carries a little of the laid part's weight, a small negative value)
+// and length_on_seabed_k.
 //
 // The fairleads are fixed here: each is a support of line_k.end with the displacement that takes
 // the reference end to the fairlead (fairleadSupport below), the one place where a platform's
@@ -284,6 +287,10 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
       s["fairlead_horizontal_" + k] = summaryItem("reaction_horizontal", "node", name + ".end");
       s["fairlead_vertical_" + k] = summaryItem("reaction_z", "node", name + ".end");
       s["anchor_tension_" + k] = summaryItem("end_tension", "element", first, "first");
+      s["anchor_horizontal_" + k] = summaryItem("reaction_horizontal", "node", name + ".start");
+      YAML::Node uplift = summaryItem("reaction_z", "node", name + ".start");
+      uplift["scale"] = -1;  // the line's pull on the anchor, upward +
+      s["anchor_vertical_" + k] = uplift;
       s["length_on_seabed_" + k] = summaryItem("length_on_seabed", "line", name);
     }
     elements_before += m.elements;
