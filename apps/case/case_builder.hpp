@@ -63,6 +63,18 @@ struct PendingCable {
   std::string section;
   int line = 0;
   std::string where;  // "lines[2]"
+  std::string name;   // the line's name, "" for none
+};
+
+// A line's `initial_shape: catenary` (read_initial_shape.cpp): its nodes start on the elastic
+// catenary between where its supports put its ends (build_initial_shape.cpp).
+struct InitialShapeSpec {
+  std::vector<int> nodes;  // the line's, start to end
+  const SectionSpec* section = nullptr;
+  double friction = 0.0;    // C_B on the laid part (the static FE has no friction: default 0)
+  double max_strain = 0.1;  // hydro::CatenaryLineInputs::max_strain
+  int line = 0;
+  std::string where;  // "lines[2].initial_shape"
 };
 
 // One item of `loads: enclosed_fluid:` as read (read_enclosed_fluid.cpp): the liquid in the
@@ -93,6 +105,7 @@ struct CaseBuilder {
   std::map<std::string, std::optional<SectionSpec>> sections;  // nullopt: broken
   std::set<std::string> broken_node_names;  // lines and node sets defined with errors
   std::vector<PendingCable> line_cables;
+  std::map<std::string, std::vector<int>> line_elements;  // the elements of each named line
   // Membrane law of each material (null: broken, or linear_elastic without nu).
   std::map<std::string, std::shared_ptr<const material::MembraneMaterial>> membrane_materials;
   std::vector<PendingSurface> surface_elements;
@@ -105,8 +118,9 @@ struct CaseBuilder {
   // The support that fixed each dof first (3 * node + component -> line), to refuse a second
   // one that prescribes another value.
   std::unordered_map<long long, int> support_line;
-  bool gravity_given = false;  // `loads: gravity` (the water takes its magnitude)
-  HydroSpec hydro;             // the ocean sections (read_hydro.cpp)
+  bool gravity_given = false;                    // `loads: gravity` (the water takes its magnitude)
+  HydroSpec hydro;                               // the ocean sections (read_hydro.cpp)
+  std::vector<InitialShapeSpec> initial_shapes;  // of the lines that give one
   std::vector<EnclosedFluidSpec> enclosed_fluids;  // read with loads: (read_enclosed_fluid.cpp)
 
   std::set<std::pair<int, int>> released;  // (node, component) freed by a step's release:
@@ -163,6 +177,17 @@ void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp
 // nodes, steps that need a mass or more dofs than there are. Errors go to the Diagnostics;
 // warnings (the model runs, but perhaps not as meant) too, as warnings.
 void checkModel(CaseBuilder& b);
+// A line's `initial_shape:` (read_initial_shape.cpp), kept in b.initial_shapes.
+void readInitialShape(CaseBuilder& b, const YAML::Node& n, const std::string& path,
+                      const std::vector<int>& nodes, const SectionSpec* section);
+// The weight per unstretched length of a line of this section in the case's gravity, less its
+// buoyancy rho_w g pi d^2 / 4 where the section has hydro: in water (build_initial_shape.cpp).
+double submergedWeightPerLength(const CaseBuilder& b, const SectionSpec& section);
+// The start of the lines with an initial_shape: (build_initial_shape.cpp): each one's nodes on
+// the elastic catenary with seabed contact between its ends as its supports place them, as the
+// model's start displacements at load factor 1. Lines that cannot be started are errors at their
+// key. For a valid case only (after checkModel).
+void buildInitialShapes(CaseBuilder& b);
 // The sea of b.hydro and its loads on the model (build_hydro.cpp): Morison loads on the lines of
 // sections with hydro:, the bodies' loads, seabed contact; the sea kept in the Case. For a valid
 // case only (after checkModel).

@@ -100,6 +100,7 @@ Case readCase(const std::string& path) {
       diag.error(0, "every dof is fixed (expected something to solve for)");
     checkModel(b);
   }
+  if (diag.empty()) buildInitialShapes(b);
   diag.throwIfAny();
   buildOcean(b);
   c.warnings = diag.warnings();

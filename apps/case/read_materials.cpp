@@ -13,14 +13,37 @@ struct MaterialLaws {
   std::shared_ptr<const material::MembraneMaterial> membrane;
 };
 
+// `strain: green` (Eq. 2.53, the default) or `engineering` (N = EA (lambda - 1), the mooring
+// codes' law) of a linear elastic material: whether it is engineering. A membrane (nu given)
+// keeps Green's strain.
+std::optional<bool> readEngineeringStrain(CaseBuilder& b, const Fields& f, bool membrane) {
+  const YAML::Node* s = f.find("strain");
+  if (!s) return false;
+  const auto chosen =
+      b.in.choice<bool>(*s, f.path("strain"), {{"green", false}, {"engineering", true}});
+  if (chosen && *chosen && membrane) {
+    b.diag.error(*s, f.path("strain") + ": engineering strain is a cable law (got it with nu, " +
+                         "expected no nu: a membrane's linear law is Green's strain, Eq. 2.41)");
+    return std::nullopt;
+  }
+  return chosen;
+}
+
+std::shared_ptr<const material::CableMaterial> linearCable(double E, Compression compression,
+                                                           bool engineering) {
+  if (engineering) return std::make_shared<material::EngineeringStrainCable>(E, compression);
+  return std::make_shared<material::LinearElasticCable>(E, compression);
+}
+
 MaterialLaws readMaterial(CaseBuilder& b, const MapEntry& e) {
   const std::string path = childPath("materials", e.key);
   const std::string type = peekText(e.value, "type");
   Fields f(b.diag, e.value, path,
-           type == "linear_elastic" ? std::vector<std::string>{"type", "E", "nu", "compression"}
+           type == "linear_elastic"
+               ? std::vector<std::string>{"type", "E", "nu", "compression", "strain"}
            : type == "mooney_rivlin"
                ? std::vector<std::string>{"type", "C1", "C2", "compression"}
-               : std::vector<std::string>{"type", "E", "nu", "C1", "C2", "compression"});
+               : std::vector<std::string>{"type", "E", "nu", "C1", "C2", "compression", "strain"});
   const YAML::Node* t = f.require("type");
   if (!t) return {};
   if (type != "linear_elastic" && type != "mooney_rivlin") {
@@ -47,9 +70,9 @@ MaterialLaws readMaterial(CaseBuilder& b, const MapEntry& e) {
       }
       if (!nu) return {};
     }
-    if (!modulus) return {};
-    MaterialLaws laws{std::make_shared<material::LinearElasticCable>(*modulus, compression),
-                      nullptr};
+    const std::optional<bool> engineering = readEngineeringStrain(b, f, nu.has_value());
+    if (!modulus || !engineering) return {};
+    MaterialLaws laws{linearCable(*modulus, compression, *engineering), nullptr};
     if (nu) laws.membrane = std::make_shared<material::LinearElasticPlaneStress>(*modulus, *nu);
     return laws;
   }

@@ -40,7 +40,8 @@ std::optional<LineEnd> readLineEnd(CaseBuilder& b, Fields& f, const char* point,
 
 void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   Fields f(b.diag, item, path,
-           {"name", "from", "to", "start_node", "end_node", "elements", "order", "section"});
+           {"name", "from", "to", "start_node", "end_node", "elements", "order", "section",
+            "initial_shape"});
   std::string name;
   if (const YAML::Node* n = f.find("name")) {
     name = b.in.text(*n, f.path("name")).value_or("");
@@ -81,8 +82,10 @@ void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
     for (int e = 0; e < elements; ++e) {
       const auto first = nodes.begin() + e * (order - 1);
       b.line_cables.push_back(
-          {std::vector<int>(first, first + order), ns->Scalar(), lineOf(item), path});
+          {std::vector<int>(first, first + order), ns->Scalar(), lineOf(item), path, name});
     }
+  if (const YAML::Node* shape = f.find("initial_shape"))
+    readInitialShape(b, *shape, f.path("initial_shape"), nodes, section);
   if (!name.empty()) b.c.lines[name] = std::move(nodes);
 }
 
@@ -330,7 +333,9 @@ void readElements(CaseBuilder& b, const YAML::Node& n) {
   for (size_t i = 0; i < items.size(); ++i) readElement(b, items[i], itemPath("elements", i));
   for (PendingCable& p : b.line_cables) {
     const SectionSpec& s = *b.sections.at(p.section);
-    b.model.addElement(element::makeCableElement(std::move(p.nodes), s.section, s.quadrature));
+    const int e =
+        b.model.addElement(element::makeCableElement(std::move(p.nodes), s.section, s.quadrature));
+    if (!p.name.empty()) b.line_elements[p.name].push_back(e);
     b.element_types.push_back("cable");
     b.element_origin.push_back({p.line, p.where, p.section});
   }

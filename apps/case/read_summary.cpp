@@ -10,8 +10,8 @@ namespace {
 using Quantity = SummarySpec::Quantity;
 
 // What a quantity is measured on: a node, one end of a cable or spring, a membrane element, a mode
-// of a modes step, or the whole model.
-enum class Target { Node, ElementEnd, Membrane, Mode, Model };
+// of a modes step, the whole model, or a named line.
+enum class Target { Node, ElementEnd, Membrane, Mode, Model, Line };
 
 // The unit a quantity is reported in. A support reaction of an axisymmetric model is per radian
 // of circumference, like every force of its meridian (a hoop cable's tension is a whole force).
@@ -109,6 +109,8 @@ const std::vector<std::pair<std::string, QuantityInfo>>& quantities() {
       {"reaction_y", {Quantity::Reaction, 1, Measure::Reaction, Target::Node}},
       {"reaction_z", {Quantity::Reaction, 2, Measure::Reaction, Target::Node}},
       {"reaction_magnitude", {Quantity::ReactionMagnitude, 0, Measure::Reaction, Target::Node}},
+      {"reaction_horizontal", {Quantity::ReactionHorizontal, 0, Measure::Reaction, Target::Node}},
+      {"length_on_seabed", {Quantity::LengthOnSeabed, 0, Measure::Length, Target::Line}},
       {"end_tension", {Quantity::EndTension, 0, Measure::Force, Target::ElementEnd}},
       {"max_tension", {Quantity::MaxTension, 0, Measure::Force, Target::Model}},
       {"resultant_max", {Quantity::ResultantMax, 0, Measure::ForcePerLength, Target::Membrane}},
@@ -193,7 +195,9 @@ bool checkReaction(CaseBuilder& b, const YAML::Node& n, const std::string& path,
   }
   const bool any =
       m.isConstrained(s.node, 0) || m.isConstrained(s.node, 1) || m.isConstrained(s.node, 2);
-  if (s.quantity == Quantity::ReactionMagnitude && !any) {
+  const bool magnitude =
+      s.quantity == Quantity::ReactionMagnitude || s.quantity == Quantity::ReactionHorizontal;
+  if (magnitude && !any) {
     b.diag.error(n, path +
                         ": the reaction is zero (got a node without support, expected a node "
                         "with a fixed dof)");
@@ -205,8 +209,9 @@ bool checkReaction(CaseBuilder& b, const YAML::Node& n, const std::string& path,
 // Every key a quantity does not use is an error, so that a misplaced key is not ignored.
 bool rejectUnused(CaseBuilder& b, Fields& f, const std::string& quantity, Target target) {
   bool ok = true;
-  for (const std::string key : {"node", "element", "end", "mode"}) {
-    const bool used = key == "node" ? target == Target::Node
+  for (const std::string key : {"node", "element", "end", "mode", "line"}) {
+    const bool used = key == "node"   ? target == Target::Node
+                      : key == "line" ? target == Target::Line
                       : key == "element"
                           ? target == Target::ElementEnd || target == Target::Membrane
                       : key == "end" ? target == Target::ElementEnd
@@ -311,10 +316,52 @@ bool readReduction(CaseBuilder& b, Fields& f, int index, SummarySpec& s) {
   return !window || readWindow(b, *window, f.path("window"), span, s);
 }
 
+// `line: NAME` of length_on_seabed: the line's elements, their submerged weight per length, and
+// its anchor (the lower end, if supported in z), whose share of the laid weight counts as the
+// bed's. The case must have seabed contact.
+bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path, SummarySpec& s) {
+  const auto name = b.in.text(n, path);
+  if (!name) return false;
+  const auto line = b.line_elements.find(*name);
+  if (line == b.line_elements.end()) {
+    if (!b.broken_node_names.count(*name))
+      b.diag.error(n, path + ": unknown line (got '" + *name + "', expected a line's name, " +
+                          nameList(b.line_elements) + ")");
+    return false;
+  }
+  if (!b.hydro.has_contact) {
+    b.diag.error(n, path + ": no seabed contact in this case (got length_on_seabed, expected " +
+                        "seabed: with water:)");
+    return false;
+  }
+  const SectionSpec* section = nullptr;
+  for (int e : line->second) {
+    const auto it = b.sections.find(b.element_origin[e].section);
+    if (it != b.sections.end() && it->second) section = &*it->second;
+  }
+  if (!section) return false;  // broken section: reported where it is defined
+  s.elements = line->second;
+  s.weight_per_length = submergedWeightPerLength(b, *section);
+  if (!(s.weight_per_length > 0.0)) {
+    b.diag.error(n, path + ": the line does not sink (got a submerged weight of " +
+                        formatNumber(s.weight_per_length) + " per length, expected > 0: " +
+                        "length_on_seabed is the length whose weight the bed carries)");
+    return false;
+  }
+  const std::vector<int>& nodes = b.c.lines.at(*name);
+  const model::Model& m = b.model;
+  const auto height = [&m](int node) {  // where its supports put it, at load factor 1
+    return m.reference()(2, node) + (m.isConstrained(node, 2) ? m.prescribed(node, 2) : 0.0);
+  };
+  const int lower = height(nodes.front()) <= height(nodes.back()) ? nodes.front() : nodes.back();
+  s.node = m.isConstrained(lower, 2) ? lower : -1;
+  return true;
+}
+
 std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   Fields f(b.diag, e.value, childPath("summary", e.key),
-           {"quantity", "node", "element", "end", "mode", "scale", "unit", "step", "at", "stat",
-            "window"});
+           {"quantity", "node", "element", "end", "mode", "line", "scale", "unit", "step", "at",
+            "stat", "window"});
   SummarySpec s;
   s.name = e.key;
   s.where = {b.diag.file(), lineOf(e.key_node)};
@@ -382,6 +429,10 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
     if (!element || !which) return std::nullopt;
     s.element = *element;
     s.end = *which;
+  }
+  if (info.target == Target::Line) {
+    const YAML::Node* l = f.require("line");
+    if (!l || !readSeabedLine(b, *l, f.path("line"), s)) return std::nullopt;
   }
   if (!step) return std::nullopt;
   s.step = *step;

@@ -16,6 +16,7 @@ struct Scenario {
 const Scenario kScenarios[] = {
     {"single_point_moor", expandSinglePointMoor},
     {"submerged_tube", expandSubmergedTube},
+    {"spread_mooring", expandSpreadMooring},
 };
 
 std::string scenarioNames() {

@@ -19,5 +19,6 @@ YAML::Node expandScenario(Diagnostics& diag, const YAML::Node& root);
 // that names it into the full document.
 YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root);
 YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root);
+YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root);
 
 }  // namespace flexmoor::app

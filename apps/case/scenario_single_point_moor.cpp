@@ -18,9 +18,9 @@
 //
 // Node names: the anchor is cable.start, the buoy cable.end.
 #include <cmath>
-#include <sstream>
 
 #include "apps/case/scenario.hpp"
+#include "apps/case/scenario_yaml.hpp"
 #include "apps/case/units.hpp"
 #include "apps/case/yaml_input.hpp"
 
@@ -29,32 +29,6 @@ namespace {
 
 const double kPi = std::acos(-1.0);
 
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
-
-YAML::Node flowSequence(std::initializer_list<std::string> items) {
-  YAML::Node n(YAML::NodeType::Sequence);
-  for (const std::string& i : items) n.push_back(i);
-  return n;
-}
-
-UnitSystem quietUnits(const YAML::Node& root) {
-  const YAML::Node u = root["units"];
-  return u && u.IsScalar() && u.Scalar() == "US" ? UnitSystem::US : UnitSystem::SI;
-}
-
-// The keys the scenario makes: a case that names the scenario does not give them itself.
-const std::vector<std::string>& generatedKeys() {
-  static const std::vector<std::string> keys = {"materials", "sections", "nodes",  "lines",
-                                                "surfaces",  "elements", "bodies", "supports",
-                                                "loads",     "node_sets"};
-  return keys;
-}
-
 struct Hold {
   double x = 0.0, z = 0.0;
 };
@@ -62,14 +36,14 @@ struct Hold {
 }  // namespace
 
 YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
-  const UnitSystem units = quietUnits(root);
+  const UnitSystem units = scenarioUnits(root);
   Input in(diag, units);
   Fields top(diag, root, "",
              {"name",   "title",    "units",    "scenario",  "water",     "waves",    "current",
               "seabed", "anchor",   "cable",    "buoy",      "gravity",   "relax",    "dynamic",
               "steps",  "summary",  "figure",   "histories", "materials", "sections", "nodes",
               "lines",  "surfaces", "elements", "bodies",    "supports",  "loads",    "node_sets"});
-  for (const std::string& key : generatedKeys())
+  for (const std::string& key : scenarioGeneratedKeys())
     if (top.find(key))
       diag.error(top.keyLine(key), key + ": given with scenario: single_point_moor (got " + key +
                                        ":, expected the scenario's keys anchor:, cable:, buoy: "
@@ -185,11 +159,11 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
                           "histories", "summary", "figure"})
     if (const YAML::Node* n = top.find(key)) doc[key] = *n;
   doc["materials"]["line"]["type"] = "linear_elastic";
-  doc["materials"]["line"]["E"] = number(*ea / area);  // EA over pi d^2 / 4
+  doc["materials"]["line"]["E"] = scenarioNumber(*ea / area);  // EA over pi d^2 / 4
   YAML::Node section;
   section["material"] = "line";
-  section["area"] = number(area);
-  section["density"] = number(*w_air / (g * area));  // mass per length over the area
+  section["area"] = scenarioNumber(area);
+  section["density"] = scenarioNumber(*w_air / (g * area));  // mass per length over the area
   YAML::Node hydro;
   hydro["diameter"] = *cable.find("diameter");
   for (const char* key : {"Cn", "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length"})
@@ -198,8 +172,10 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
   doc["sections"]["line"] = section;
   YAML::Node line;
   line["name"] = "cable";
-  line["from"] = flowSequence({number(anchor.x()), number(anchor.y()), number(anchor.z())});
-  line["to"] = flowSequence({number(anchor.x() + *length), number(anchor.y()), number(anchor.z())});
+  line["from"] = flowSequence(
+      {scenarioNumber(anchor.x()), scenarioNumber(anchor.y()), scenarioNumber(anchor.z())});
+  line["to"] = flowSequence({scenarioNumber(anchor.x() + *length), scenarioNumber(anchor.y()),
+                             scenarioNumber(anchor.z())});
   line["elements"] = elements;
   line["order"] = order;
   line["section"] = "line";
@@ -209,8 +185,8 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
   body["Cd"] = *cd;
   if (volume) {  // the stated weights in water and air make its buoyancy
     body["type"] = "point";
-    body["volume"] = number(*volume);
-    body["drag_area"] = number(*cd_value * kPi * *diameter * *diameter / 4.0);
+    body["volume"] = scenarioNumber(*volume);
+    body["drag_area"] = scenarioNumber(*cd_value * kPi * *diameter * *diameter / 4.0);
     body.remove("Cd");
   } else {
     body["type"] = "sphere";
@@ -226,9 +202,9 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
   fixed_anchor["fix"] = flowSequence({"x", "z"});
   held["node"] = "cable.end";
   held["fix"] = flowSequence({"x", "z"});
-  held["displacement"] = flowSequence({number(hold->x - *length), number(hold->z)});
+  held["displacement"] = flowSequence({scenarioNumber(hold->x - *length), scenarioNumber(hold->z)});
   for (const YAML::Node& s : {planar, fixed_anchor, held}) doc["supports"].push_back(s);
-  doc["loads"]["gravity"]["g"] = number(g);
+  doc["loads"]["gravity"]["g"] = scenarioNumber(g);
   // Unless the case says otherwise: where the buoy ends, how fast it went, how hard the anchor
   // was pulled, and a figure of the four over time.
   if (!top.find("summary")) {
@@ -270,7 +246,7 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
     YAML::Node relax;
     relax["name"] = "held";
     relax["tolerance"] = "1e-6";
-    relax["damping"] = number(0.01 * *ea / *length);
+    relax["damping"] = scenarioNumber(0.01 * *ea / *length);
     relax["initial_damping_factor"] = "0.01";
     if (const YAML::Node* r = top.find("relax"))
       for (const auto& kv : *r) relax[kv.first.Scalar()] = kv.second;

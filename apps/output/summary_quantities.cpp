@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "apps/output/membrane_resultants.hpp"
+#include "libhydro/seabed/seabed_line_load.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -52,6 +53,32 @@ std::pair<double, double> principalResultants(const SummarySpec& spec, const mod
   return *resultants;
 }
 
+// The unstretched length of a line whose weight the seabed carries: the bed's vertical force over
+// the line, integrated at the elements' own integration points (the consistent nodal forces of
+// the seabed load summed), plus the anchor's upward reaction when the anchor is held at the
+// bed's level (the penalty bed carries the laid line a penetration below it, so the anchor
+// holds the end of the laid part), over the submerged weight per length. A line on a rigid bed
+// gives its laid length L_B; a fully suspended line 0. In a static equilibrium under weight,
+// buoyancy and the bed alone it equals L - V_F / w, with V_F the fairlead's vertical force.
+double lengthOnSeabed(const SummarySpec& spec, const model::Model& model,
+                      const SummarySource& source) {
+  const model::LineLoad* bed = nullptr;
+  for (const auto& load : model.lineLoads())
+    if (dynamic_cast<const hydro::SeabedLineLoad*>(load.get())) bed = load.get();
+  if (!bed)
+    throw std::out_of_range("summary \"" + spec.name + "\": the model has no seabed contact");
+  double carried = 0.0;
+  Eigen::VectorXd p;
+  for (const int e : spec.elements) {
+    requireIndex(e, model.elementCount(), spec, "element");
+    model.element(e).lineLoad({model.reference(), source.state(), e}, *bed, p, nullptr);
+    for (Eigen::Index a = 2; a < p.size(); a += 3) carried += p(a);
+  }
+  carried *= source.state().load_factor;  // line loads act scaled by it
+  if (spec.node >= 0) carried += std::max(source.reactions()(2, spec.node), 0.0);
+  return carried / spec.weight_per_length;
+}
+
 // The frame closing a step: everything is already computed.
 class FrameSource : public SummarySource {
  public:
@@ -88,6 +115,11 @@ double unscaled(const SummarySpec& spec, const model::Model& model, const Summar
     case Q::ReactionMagnitude:
       requireIndex(n, model.nodeCount(), spec, "node");
       return source.reactions().col(n).norm();
+    case Q::ReactionHorizontal:
+      requireIndex(n, model.nodeCount(), spec, "node");
+      return source.reactions().col(n).head<2>().norm();
+    case Q::LengthOnSeabed:
+      return lengthOnSeabed(spec, model, source);
     case Q::EndTension:
       requireIndex(spec.end, 2, spec, "end");
       return elementResult(spec, model, source).end_tension[spec.end];

@@ -22,7 +22,7 @@ class SummarySource {
 };
 
 // Displacement, position (reference + displacement), velocity, speed |u'|, reaction component,
-// reaction magnitude, end tension or the largest end tension over all elements, membrane
+// reaction magnitude, horizontal reaction, length of a line on the seabed, end tension or the largest end tension over all elements, membrane
 // resultants, mode frequency; times spec.scale. spec.reduction is not looked at: this is the
 // value in one state. Throws std::out_of_range when the spec names a node, element, end,
 // component or mode the model or source does not have.

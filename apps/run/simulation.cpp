@@ -143,7 +143,7 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
 SimulationResult Simulation::run() {
   SimulationResult out;
   out.states.reserve(c_.steps.size());  // the frames point into it
-  model::State state = c_.model->initialState();
+  model::State state = c_.model->startState();
   for (size_t i = 0; i < c_.steps.size(); ++i) {
     const StepSpec& spec = c_.steps[i];
     log_ << "step " << i + 1 << "/" << c_.steps.size() << ": " << spec.name << std::endl;

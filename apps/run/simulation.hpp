@@ -42,9 +42,9 @@ class Simulation {
   // accepted state, and the last converged state of a step that fails) goes to every sink.
   void addSink(ResultSink& sink) { sinks_.push_back(&sink); }
 
-  // Runs the steps in order from the model's initial state. A step that does not converge ends
-  // the run with kNotConverged after its last converged state went to the sinks; other failures
-  // throw.
+  // Runs the steps in order from the model's start state (Model::startState). A step that does
+  // not converge ends the run with kNotConverged after its last converged state went to the
+  // sinks; other failures throw.
   SimulationResult run();
 
  private:

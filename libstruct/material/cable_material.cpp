@@ -23,6 +23,13 @@ PhysicalStress LinearElasticCable::law(double stretch) const {
   return {0.5 * E_ * (stretch * stretch - 1.0), E_ * stretch};
 }
 
+EngineeringStrainCable::EngineeringStrainCable(double youngs_modulus, Compression compression)
+    : CableMaterial(compression), E_(youngs_modulus) {}
+
+PhysicalStress EngineeringStrainCable::law(double stretch) const {
+  return {E_ * (stretch - 1.0) / stretch, E_ / (stretch * stretch)};
+}
+
 MooneyRivlinCable::MooneyRivlinCable(double C1, double C2, Compression compression)
     : CableMaterial(compression), C1_(C1), C2_(C2) {}
 

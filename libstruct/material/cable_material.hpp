@@ -63,6 +63,22 @@ class LinearElasticCable final : public CableMaterial {
   double E_;
 };
 
+// The linear law of mooring codes (Irvine's elastic catenary, MAP++, MoorDyn): the axial force
+// N = E A0 (lambda - 1), linear in the engineering strain, so S = N / (lambda A0) =
+// E (lambda - 1) / lambda. It equals Eq. 2.53 to first order in the strain; at strain e the
+// force of Eq. 2.53 is larger by the factor (1 + e)(1 + e / 2).
+class EngineeringStrainCable final : public CableMaterial {
+ public:
+  EngineeringStrainCable(double youngs_modulus, Compression compression);
+  std::string name() const override { return "linear_elastic (engineering strain)"; }
+
+ protected:
+  PhysicalStress law(double stretch) const override;
+
+ private:
+  double E_;
+};
+
 // Eq. 2.54, incompressible Mooney-Rivlin: S = 2 (1 - lambda^-3)(C1 + C2 / lambda).
 class MooneyRivlinCable final : public CableMaterial {
  public:

@@ -74,6 +74,25 @@ Model::Constraint Model::release(int node, int component) {
   return held;
 }
 
+void Model::setStartDisplacement(int node, const Eigen::Vector3d& displacement) {
+  if (node < 0 || node >= nodeCount())
+    throw std::out_of_range("start displacement at node " + std::to_string(node) + " of " +
+                            std::to_string(nodeCount()));
+  if (start_displacement_.cols() != nodeCount()) {
+    const NodalField given = start_displacement_;
+    start_displacement_ = NodalField::Zero(3, nodeCount());
+    start_displacement_.leftCols(given.cols()) = given;
+  }
+  start_displacement_.col(node) = displacement;
+}
+
+State Model::startState() const {
+  State s(nodeCount());
+  s.load_factor = start_load_factor_;
+  s.displacement.leftCols(start_displacement_.cols()) = start_displacement_;
+  return s;
+}
+
 void Model::numberEquations() {
   equation_.resize(3, nodeCount());
   equation_count_ = 0;

@@ -88,7 +88,17 @@ class Model {
   int equationCount() const { return equation_count_; }
   void numberEquations();
 
+  // The reference configuration at rest, load factor 0 (what element masses are taken at).
   State initialState() const { return State(nodeCount()); }
+
+  // Where a run starts: the reference unless a starting shape is given, as displacements from
+  // the reference (a line's catenary: the reference keeps the unstretched lengths, total
+  // Lagrangian) at a load factor (1: the shape under the full static loads, the prescribed
+  // displacements included). Nodes without one start at their reference.
+  void setStartDisplacement(int node, const Eigen::Vector3d& displacement);
+  void setStartLoadFactor(double load_factor) { start_load_factor_ = load_factor; }
+  bool hasStartShape() const { return start_displacement_.cols() > 0; }
+  State startState() const;
 
  private:
   NodalField reference_ = NodalField(3, 0);
@@ -105,6 +115,8 @@ class Model {
   std::vector<std::shared_ptr<const LineLoad>> line_loads_;
   std::vector<std::shared_ptr<const NodeLoad>> node_loads_;
   std::vector<SurfaceLoadOn> surface_loads_;
+  NodalField start_displacement_ = NodalField(3, 0);  // empty, or one column a node
+  double start_load_factor_ = 0.0;
 };
 
 }  // namespace flexmoor::model

@@ -309,8 +309,11 @@ material::CableStress stressAt(const material::CableMaterial& m, double stretch)
 TEST(CableMaterial, MaterialTangentMatchesFiniteDifference) {
   const material::LinearElasticCable linear(2.0e7, Compression::Carry);
   const material::MooneyRivlinCable mooney(2300.0, 280.0, Compression::Carry);
-  for (const material::CableMaterial* law : {static_cast<const material::CableMaterial*>(&linear),
-                                             static_cast<const material::CableMaterial*>(&mooney)})
+  const material::EngineeringStrainCable engineering(2.0e7, Compression::Carry);
+  for (const material::CableMaterial* law :
+       {static_cast<const material::CableMaterial*>(&linear),
+        static_cast<const material::CableMaterial*>(&mooney),
+        static_cast<const material::CableMaterial*>(&engineering)})
     for (const double stretch : {0.7, 0.95, 1.0, 1.02, 1.3, 2.5}) {
       const double A11 = stretch * stretch * kA11, dgamma = 1e-6 * kA11;
       const double fd =
@@ -363,6 +366,18 @@ TEST(CableMaterial, MooneyRivlinCauchyStressAndLinearForce) {
   EXPECT_NEAR((cauchy(1.0 + dl) - cauchy(1.0 - dl)) / (2.0 * dl), 6.0 * (C1 + C2),
               1e-7 * 6.0 * (C1 + C2));
   EXPECT_NEAR((force(1.0 + dl) - force(1.0 - dl)) / (2.0 * dl), E * A0, 1e-7 * E * A0);
+}
+
+// The mooring codes' law: axial force N = EA (lambda - 1) exactly (1e-13 relative) at every
+// stretch, compressed or stretched, and the initial modulus E.
+TEST(CableMaterial, EngineeringStrainForceIsLinearInTheStretch) {
+  const double E = 2.0e7, A0 = 0.01;
+  const material::EngineeringStrainCable law(E, Compression::Carry);
+  for (const double l : {0.7, 1.0, 1.002, 1.3, 2.5}) {
+    const double N = E * A0 * (l - 1.0);
+    EXPECT_NEAR(law.tension(kA11, l * l * kA11, A0), N, 1e-13 * E * A0) << "stretch " << l;
+  }
+  EXPECT_EQ(law.initialModulus(), E);
 }
 
 // Tension-only: zero stress and zero stiffness when shortened, the full law when stretched.
