@@ -253,11 +253,15 @@ void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
            " integration points; the file's layout has " + std::to_string(element_points_[e]));
 }
 
-void NetcdfWriter::gatherNodal(const Vector3Variable& v, const model::NodalField& field) {
+void NetcdfWriter::gatherNodal(const Vector3Variable& v, const model::NodalField& field,
+                               const model::NodalField* plus) {
   const size_t nodes = node_count_;
   for (int k = 0; k < 3; ++k) {
     Eigen::Map<Eigen::RowVectorXd> values(file_.slot<double>(v.id[k], records_), nodes);
-    values = field.row(k);
+    if (plus)
+      values = field.row(k) + plus->row(k);
+    else
+      values = field.row(k);
     if (!values.allFinite())
       requireAllFinite(values.data(), nodes, path(), [&](size_t n) {
         return v.name + kAxis[k] + "[step " + std::to_string(records_) + ", node " +
@@ -366,8 +370,7 @@ void NetcdfWriter::write(const ResultFrame& frame) {
     gatherScalar(time_, "time", s.time);
     gatherScalar(load_factor_, "load_factor", s.load_factor);
     gatherNodal(displacement_, s.displacement);
-    position_values_ = reference_ + s.displacement;
-    gatherNodal(position_, position_values_);
+    gatherNodal(position_, s.displacement, &reference_);
     gatherNodal(velocity_, s.velocity);
     gatherNodal(reaction_, frame.reactions);
     gatherTensions(frame);

@@ -74,7 +74,9 @@ class NetcdfWriter final : public ResultSink {
   void defineModes(size_t count);
   void gatherModes(const ResultFrame& frame);
   void requireMatches(const ResultFrame& frame) const;
-  void gatherNodal(const Vector3Variable& v, const model::NodalField& field);
+  // field, or field + *plus (a position: reference + displacement), one record of v.
+  void gatherNodal(const Vector3Variable& v, const model::NodalField& field,
+                   const model::NodalField* plus = nullptr);
   void gatherTensions(const ResultFrame& frame);
   void gatherResultants(const ResultFrame& frame);
   void putText(int variable, size_t index, const std::string& text);
@@ -88,7 +90,6 @@ class NetcdfWriter final : public ResultSink {
   size_t records_ = 0;
   // Buffers reused by every record, so that writing a record allocates nothing (its values go
   // straight into the file's record buffers: NetcdfFile::slot).
-  model::NodalField position_values_;
   std::string text_;
   std::vector<size_t> text_start_{0, 0}, text_count_{1, kNameLength};
 

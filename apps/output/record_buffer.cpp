@@ -1,10 +1,6 @@
 #include "apps/output/record_buffer.hpp"
 
 namespace flexmoor::app {
-size_t RecordBuffer::valueBytes(nc_type type) {
-  return type == NC_DOUBLE ? sizeof(double) : type == NC_INT ? sizeof(int) : sizeof(char);
-}
-
 RecordBuffer::RecordBuffer(std::vector<size_t> extents, size_t capacity)
     : extents_(std::move(extents)), capacity_(capacity) {
   for (const size_t n : extents_) record_values_ *= n;
@@ -20,15 +16,8 @@ bool RecordBuffer::isRecord(const std::vector<size_t>& start,
   return true;
 }
 
-void* RecordBuffer::slot(size_t record, nc_type type) {
-  if (empty()) {
-    first_ = record;
-    type_ = type;
-  }
-  filling_ = true;
-  const size_t bytes = record_values_ * valueBytes(type);
-  if (bytes_.size() < (records_ + 1) * bytes) bytes_.resize(capacity_ * bytes);
-  return bytes_.data() + records_ * bytes;
+void RecordBuffer::reserve(nc_type type) {
+  bytes_.resize(capacity_ * record_values_ * valueBytes(type));
 }
 
 std::vector<size_t> RecordBuffer::start() const {

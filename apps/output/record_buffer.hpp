@@ -27,7 +27,16 @@ class RecordBuffer {
   }
   // The room for record `record`, which follows(); its values count record_values(). Filling it
   // holds nothing until commit(); a slot not committed is overwritten by the next one.
-  void* slot(size_t record, nc_type type);
+  void* slot(size_t record, nc_type type) {
+    if (empty()) {
+      first_ = record;
+      type_ = type;
+    }
+    filling_ = true;
+    const size_t bytes = record_values_ * valueBytes(type);
+    if (bytes_.size() < (records_ + 1) * bytes) reserve(type);
+    return bytes_.data() + records_ * bytes;
+  }
   void commit() {
     ++records_;
     filling_ = false;
@@ -37,7 +46,9 @@ class RecordBuffer {
   bool filling() const { return filling_; }
   size_t recordValues() const { return record_values_; }
   // Bytes of one value of memory type `type`.
-  static size_t valueBytes(nc_type type);
+  static size_t valueBytes(nc_type type) {
+    return type == NC_DOUBLE ? sizeof(double) : type == NC_INT ? sizeof(int) : sizeof(char);
+  }
 
   bool empty() const { return records_ == 0; }
   bool full() const { return records_ >= capacity_; }
@@ -49,6 +60,8 @@ class RecordBuffer {
   void clear() { records_ = 0; }
 
  private:
+  void reserve(nc_type type);  // room for `capacity` records
+
   std::vector<size_t> extents_;
   size_t record_values_ = 1;  // values in one record
   size_t capacity_;
