@@ -43,22 +43,10 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
               "seabed", "anchor",   "cable",    "buoy",      "gravity",   "relax",    "dynamic",
               "steps",  "summary",  "figure",   "histories", "materials", "sections", "nodes",
               "lines",  "surfaces", "elements", "bodies",    "supports",  "loads",    "node_sets"});
-  for (const std::string& key : scenarioGeneratedKeys())
-    if (top.find(key))
-      diag.error(top.keyLine(key), key + ": given with scenario: single_point_moor (got " + key +
-                                       ":, expected the scenario's keys anchor:, cable:, buoy: "
-                                       "and no " +
-                                       key + ": of the case's own)");
+  refuseGeneratedKeys(diag, top, "single_point_moor", "anchor:, cable:, buoy:");
   // Water: its density and depth make the rope's buoyancy and the anchor's default place.
-  double rho = 0.0, depth = 0.0;
-  if (const YAML::Node* w = top.require("water")) {
-    const YAML::Node d = (*w)["density"], h = (*w)["depth"];
-    if (d) rho = in.quantity(d, "water.density", kind::kDensity, Limit::Positive).value_or(0.0);
-    if (h) depth = in.quantity(h, "water.depth", kind::kLength, Limit::Positive).value_or(0.0);
-  }
-  double g = standardGravity(units);
-  if (const YAML::Node* n = top.find("gravity"))
-    g = in.quantity(*n, "gravity", kind::kAcceleration, Limit::Positive).value_or(g);
+  const ScenarioWater water = readScenarioWater(in, top, units);
+  const double rho = water.density, depth = water.depth, g = water.gravity;
   Eigen::Vector3d anchor(0.0, 0.0, -depth);
   if (const YAML::Node* n = top.find("anchor"))
     anchor = in.vector3(*n, "anchor", kind::kLength).value_or(anchor);

@@ -179,21 +179,9 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
       "statics", "dynamic", "steps",   "summary",   "figure"};
   keys.insert(keys.end(), scenarioGeneratedKeys().begin(), scenarioGeneratedKeys().end());
   Fields top(diag, root, "", keys);
-  for (const std::string& key : scenarioGeneratedKeys())
-    if (top.find(key))
-      diag.error(top.keyLine(key), key + ": given with scenario: spread_mooring (got " + key +
-                                       ":, expected the scenario's keys line_types: and "
-                                       "mooring_lines:, and no " +
-                                       key + ": of the case's own)");
-  double rho = 0.0, depth = 0.0;
-  if (const YAML::Node* w = top.require("water")) {
-    const YAML::Node d = (*w)["density"], h = (*w)["depth"];
-    if (d) rho = in.quantity(d, "water.density", kind::kDensity, Limit::Positive).value_or(0.0);
-    if (h) depth = in.quantity(h, "water.depth", kind::kLength, Limit::Positive).value_or(0.0);
-  }
-  double g = standardGravity(units);
-  if (const YAML::Node* n = top.find("gravity"))
-    g = in.quantity(*n, "gravity", kind::kAcceleration, Limit::Positive).value_or(g);
+  refuseGeneratedKeys(diag, top, "spread_mooring", "line_types: and mooring_lines:,");
+  const ScenarioWater water = readScenarioWater(in, top, units);
+  const double rho = water.density, depth = water.depth, g = water.gravity;
 
   std::map<std::string, LineType> types;
   if (const YAML::Node* n = top.require("line_types"))

@@ -23,9 +23,9 @@
 // membrane the surface tube; nodes 1, 4, 7, 10 of the dissertation (top, right, bottom, left on
 // the ring y = 0) by position.
 #include <cmath>
-#include <sstream>
 
 #include "apps/case/scenario.hpp"
+#include "apps/case/scenario_yaml.hpp"
 #include "apps/case/units.hpp"
 #include "apps/case/yaml_input.hpp"
 
@@ -34,16 +34,9 @@ namespace {
 
 const double kPi = std::acos(-1.0);
 
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
-
 YAML::Node point(double x, double y, double z) {
   YAML::Node n(YAML::NodeType::Sequence);
-  for (double v : {x, y, z}) n.push_back(number(v));
+  for (double v : {x, y, z}) n.push_back(scenarioNumber(v));
   n.SetStyle(YAML::EmitterStyle::Flow);
   return n;
 }
@@ -54,38 +47,19 @@ YAML::Node at(double x, double y, double z) {
   return n;
 }
 
-UnitSystem quietUnits(const YAML::Node& root) {
-  const YAML::Node u = root["units"];
-  return u && u.IsScalar() && u.Scalar() == "US" ? UnitSystem::US : UnitSystem::SI;
-}
-
 }  // namespace
 
 YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
-  const UnitSystem units = quietUnits(root);
+  const UnitSystem units = scenarioUnits(root);
   Input in(diag, units);
-  const std::vector<std::string> generated = {"materials", "sections", "nodes",    "lines",
-                                              "surfaces",  "elements", "supports", "loads"};
   std::vector<std::string> allowed = {"name",    "title", "units",   "scenario", "water", "waves",
                                       "gravity", "tube",  "liquid",  "mooring",  "relax", "modes",
                                       "dynamic", "steps", "summary", "figure"};
-  allowed.insert(allowed.end(), generated.begin(), generated.end());
+  allowed.insert(allowed.end(), scenarioGeneratedKeys().begin(), scenarioGeneratedKeys().end());
   Fields top(diag, root, "", allowed);
-  for (const std::string& key : generated)
-    if (top.find(key))
-      diag.error(top.keyLine(key), key + ": given with scenario: submerged_tube (got " + key +
-                                       ":, expected the scenario's keys tube:, liquid:, mooring: "
-                                       "and no " +
-                                       key + ": of the case's own)");
-  double rho = 0.0, depth = 0.0;
-  if (const YAML::Node* w = top.require("water")) {
-    const YAML::Node d = (*w)["density"], h = (*w)["depth"];
-    if (d) rho = in.quantity(d, "water.density", kind::kDensity, Limit::Positive).value_or(0.0);
-    if (h) depth = in.quantity(h, "water.depth", kind::kLength, Limit::Positive).value_or(0.0);
-  }
-  double g = standardGravity(units);
-  if (const YAML::Node* n = top.find("gravity"))
-    g = in.quantity(*n, "gravity", kind::kAcceleration, Limit::Positive).value_or(g);
+  refuseGeneratedKeys(diag, top, "submerged_tube", "tube:, liquid:, mooring:");
+  const ScenarioWater water = readScenarioWater(in, top, units);
+  const double rho = water.density, depth = water.depth, g = water.gravity;
   const auto need = [&](Fields& f, const char* key, const QuantityKind& kind) {
     const YAML::Node* n = f.require(key);
     return n ? in.quantity(*n, f.path(key), kind, Limit::Positive) : std::nullopt;
@@ -181,11 +155,11 @@ YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
   surface["shape"] = "cylinder";
   surface["axis"] = "y";
   surface["centre"] = point(0.0, 0.0, zc);
-  surface["radius"] = number(R);
-  surface["length"] = number(*layer);
+  surface["radius"] = scenarioNumber(R);
+  surface["length"] = scenarioNumber(*layer);
   YAML::Node angles(YAML::NodeType::Sequence);  // radians, a corner at 180 deg - attach_angle
-  angles.push_back(number(kPi - *attach));
-  angles.push_back(number(3.0 * kPi - *attach));
+  angles.push_back(scenarioNumber(kPi - *attach));
+  angles.push_back(scenarioNumber(3.0 * kPi - *attach));
   angles.SetStyle(YAML::EmitterStyle::Flow);
   surface["angles"] = angles;
   YAML::Node divisions(YAML::NodeType::Sequence);
@@ -204,7 +178,7 @@ YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
   anchors["fix"].push_back("z");
   doc["supports"].push_back(symmetry);
   doc["supports"].push_back(anchors);
-  doc["loads"]["gravity"]["g"] = number(g);
+  doc["loads"]["gravity"]["g"] = scenarioNumber(g);
   YAML::Node sea, fluid;
   sea["on"] = "tube";
   sea["water_side"] = "positive";
@@ -212,8 +186,9 @@ YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
   fluid["on"] = "tube";
   for (const char* key : {"specific_gravity", "density"})
     if (const YAML::Node* n = liquid.find(key)) fluid[key] = *n;
-  fluid["pressure"] = number(*resultant + rho * g * *axis_depth);  // sea's at the axis + resultant
-  fluid["at_z"] = number(zc);
+  fluid["pressure"] =
+      scenarioNumber(*resultant + rho * g * *axis_depth);  // sea's at the axis + resultant
+  fluid["at_z"] = scenarioNumber(zc);
   doc["loads"]["enclosed_fluid"].push_back(fluid);
 
   if (!top.find("summary")) {
@@ -263,7 +238,8 @@ YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
   relax["name"] = "equilibrium";
   relax["tolerance"] = "1e-6";
   const double length = std::hypot(run, za + depth);
-  relax["damping"] = number(std::pow(10.0, std::round(std::log10(2.0 * *youngs * *area / length))));
+  relax["damping"] =
+      scenarioNumber(std::pow(10.0, std::round(std::log10(2.0 * *youngs * *area / length))));
   if (const YAML::Node* r = top.find("relax"))
     for (const auto& kv : *r) relax[kv.first.Scalar()] = kv.second;
   modes["name"] = "modes";

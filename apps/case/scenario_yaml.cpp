@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "apps/case/units.hpp"
+
 namespace flexmoor::app {
 
 std::string scenarioNumber(double v) {
@@ -27,6 +29,30 @@ const std::vector<std::string>& scenarioGeneratedKeys() {
                                                 "surfaces",  "elements", "bodies", "supports",
                                                 "loads",     "node_sets"};
   return keys;
+}
+
+void refuseGeneratedKeys(Diagnostics& diag, const Fields& top, const std::string& scenario,
+                         const std::string& own_keys) {
+  for (const std::string& key : scenarioGeneratedKeys())
+    if (top.find(key))
+      diag.error(top.keyLine(key), key + ": given with scenario: " + scenario + " (got " + key +
+                                       ":, expected the scenario's keys " + own_keys + " and no " +
+                                       key + ": of the case's own)");
+}
+
+ScenarioWater readScenarioWater(Input& in, Fields& top, UnitSystem units) {
+  ScenarioWater w;
+  if (const YAML::Node* water = top.require("water")) {
+    const YAML::Node d = (*water)["density"], h = (*water)["depth"];
+    if (d)
+      w.density = in.quantity(d, "water.density", kind::kDensity, Limit::Positive).value_or(0.0);
+    if (h) w.depth = in.quantity(h, "water.depth", kind::kLength, Limit::Positive).value_or(0.0);
+  }
+  w.gravity = standardGravity(units);
+  if (const YAML::Node* n = top.find("gravity"))
+    w.gravity =
+        in.quantity(*n, "gravity", kind::kAcceleration, Limit::Positive).value_or(w.gravity);
+  return w;
 }
 
 }  // namespace flexmoor::app

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "apps/case/case.hpp"
+#include "apps/case/diagnostics.hpp"
+#include "apps/case/yaml_input.hpp"
 
 namespace flexmoor::app {
 
@@ -19,5 +21,16 @@ YAML::Node flowSequence(std::initializer_list<std::string> items);
 UnitSystem scenarioUnits(const YAML::Node& root);
 // The model's keys a scenario writes: a case that names a scenario does not give them itself.
 const std::vector<std::string>& scenarioGeneratedKeys();
+// Reports each generated key the case gives itself, naming the scenario and `own_keys` (the
+// scenario's keys that stand for them, as text).
+void refuseGeneratedKeys(Diagnostics& diag, const Fields& top, const std::string& scenario,
+                         const std::string& own_keys);
+
+// The water every ocean scenario needs: `water: {density, depth}` (required) and `gravity:`
+// (default standard gravity in the case's units).
+struct ScenarioWater {
+  double density = 0.0, depth = 0.0, gravity = 0.0;
+};
+ScenarioWater readScenarioWater(Input& in, Fields& top, UnitSystem units);
 
 }  // namespace flexmoor::app
