@@ -94,10 +94,7 @@ FluidPoint Sea::evaluate(const Eigen::Vector3d& x, double t, FluidGradient* grad
     gradient->acceleration.col(j) = k.acceleration_xy.col(j);
     gradient->pressure(j) = k.pressure_xy(j);
   }
-  const double step = 1e-4 * (std::isfinite(h) && h > 0.0 ? h : 1.0);
-  const Eigen::Vector3d shear =
-      (current_.velocity(z + step) - current_.velocity(z - step)) / (2.0 * step);
-  gradient->velocity += (k.velocity_z + shear) * dz.transpose();
+  gradient->velocity += (k.velocity_z + current_.velocityShear(z)) * dz.transpose();
   gradient->acceleration += k.acceleration_z * dz.transpose();
   gradient->pressure += k.pressure_z * dz;
   gradient->pressure.z() -= rho_g;

@@ -36,9 +36,8 @@ struct FluidPoint {
 // The derivatives of a wet FluidPoint's fields in the point's position (zero where dry). Closed
 // form: linear theory and the front's ramp differentiated, through Wheeler's z'(x, y, z) (the
 // chain rule with grad eta) or constant extrapolation (d/dz = 0 above the mean level, one-sided
-// at z = 0). The one part by central differences is a current's shear dU/dz' (step 1e-4 of the
-// depth, 1 m in deep water), since a power law is singular at the bed and a table kinked at its
-// samples.
+// at z = 0), and the current's shear (CurrentProfile::shear: one-sided at a table's samples,
+// zero at the bed for a power law, whose shear is singular there). No central differences.
 struct FluidGradient {
   Eigen::Matrix3d velocity = Eigen::Matrix3d::Zero();      // d v / d y
   Eigen::Matrix3d acceleration = Eigen::Matrix3d::Zero();  // d a / d y
