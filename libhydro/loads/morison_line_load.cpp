@@ -3,8 +3,6 @@
 #include <cmath>
 #include <utility>
 
-#include "libhydro/waves/flow_gradient.hpp"
-
 namespace flexmoor::hydro {
 
 MorisonLineLoad::MorisonLineLoad(std::shared_ptr<const Sea> sea,
@@ -19,7 +17,9 @@ model::PointForce MorisonLineLoad::evaluate(const model::LoadPoint& p, bool jaco
   model::PointForce out;
   if (p.element < 0 || p.element >= static_cast<int>(sections_.size()) || !sections_[p.element])
     return out;
-  const FluidPoint fluid = sea_->at(p.position, p.time);
+  FluidGradient g;
+  const FluidPoint fluid =
+      jacobians ? sea_->at(p.position, p.time, g) : sea_->at(p.position, p.time);
   if (!fluid.wet) return out;  // above the local surface: nothing (a line may pierce it)
   const MorisonCoefficients& c = *sections_[p.element];
   const Water& water = sea_->water();
@@ -32,7 +32,6 @@ model::PointForce MorisonLineLoad::evaluate(const model::LoadPoint& p, bool jaco
   out.d_acceleration = m.d_acceleration;
   out.d_tangent = m.d_tangent;
   // d f / d y through the flow; the buoyancy's step at the surface is left out.
-  const FlowGradient g = flowGradient(*sea_, p.position, p.time);
   out.d_position = m.d_fluid_velocity * g.velocity + m.d_fluid_acceleration * g.acceleration;
   return out;
 }

@@ -9,9 +9,8 @@
 // on the side n points to (WaterSide::Positive: outside a closed body whose normals point out)
 // pushes along -n, so the load returns -p there.
 //
-// The gradient dp/dy is by central differences with flowGradientStep(sea) (flow_gradient.hpp);
-// within one step of the free surface the difference straddles its kink (p is continuous there,
-// its gradient is not).
+// The gradient dp/dy is Sea's closed form (FluidGradient); at the free surface p is continuous
+// and its gradient is not: a wet point takes the water's, a dry one zero.
 #include <memory>
 
 #include "libhydro/waves/sea.hpp"
@@ -29,9 +28,6 @@ class IncidentPressureLoad final : public model::SurfaceLoad {
   WaterSide side() const { return side_; }
 
  private:
-  // The gauge pressure of the incident sea at x, zero where x is dry.
-  double pressure(const Eigen::Vector3d& x, double t) const;
-
   std::shared_ptr<const Sea> sea_;
   WaterSide side_;
 };

@@ -64,4 +64,29 @@ double CurrentProfile::speed(double z) const {
   return 0.0;
 }
 
+// dU/dz of speed(z): zero above the mean level and beyond a table's ends; a table's segment
+// slope (the upper segment at a sample); a power law's U_s / (n h) ((z + h) / h)^(1/n - 1),
+// singular at the bed, where (and below) it is taken as zero, as the speed is.
+double CurrentProfile::shear(double z) const {
+  if (z > 0.0) return 0.0;
+  switch (kind_) {
+    case Kind::Uniform:
+      return 0.0;
+    case Kind::PowerLaw: {
+      const double s = (z + depth_) / depth_;
+      if (s <= 0.0) return 0.0;
+      return speed_ / (exponent_n_ * depth_) * std::pow(s, 1.0 / exponent_n_ - 1.0);
+    }
+    case Kind::Table: {
+      if (z < samples_.front().first || z >= samples_.back().first) return 0.0;
+      const auto above = std::upper_bound(
+          samples_.begin(), samples_.end(), z,
+          [](double value, const std::pair<double, double>& s) { return value < s.first; });
+      const auto below = above - 1;
+      return (above->second - below->second) / (above->first - below->first);
+    }
+  }
+  return 0.0;
+}
+
 }  // namespace flexmoor::hydro

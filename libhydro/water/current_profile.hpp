@@ -19,6 +19,8 @@ class CurrentProfile {
 
   double speed(double z) const;
   Eigen::Vector3d velocity(double z) const { return speed(z) * direction_; }
+  double shear(double z) const;  // d speed / dz
+  Eigen::Vector3d velocityShear(double z) const { return shear(z) * direction_; }
 
  private:
   enum class Kind { Uniform, PowerLaw, Table };

@@ -3,7 +3,12 @@
 // one; an irregular sea adds more), an optional wave-train front, a current, and the treatment of
 // the kinematics above the mean level. It answers what the loads need at a point and time: the
 // surface elevation above it, whether the point is wet, the fluid velocity and local
-// acceleration, and the gauge pressure (hydrostatic plus dynamic).
+// acceleration, and the gauge pressure (hydrostatic plus dynamic), and on request their
+// gradients in position.
+//
+// What of each component does not change with the point and the time (k cos beta, k sin beta,
+// the depth factors, the front's speed and ramp) is computed once as components are added, so a
+// point costs one sincos and one exp per component, with its gradient or without.
 #include <Eigen/Core>
 #include <optional>
 #include <vector>
@@ -28,12 +33,24 @@ struct FluidPoint {
   double pressure = 0.0;                                   // gauge: -rho g z + p_dyn
 };
 
+// The derivatives of a wet FluidPoint's fields in the point's position (zero where dry). Closed
+// form: linear theory and the front's ramp differentiated, through Wheeler's z'(x, y, z) (the
+// chain rule with grad eta) or constant extrapolation (d/dz = 0 above the mean level, one-sided
+// at z = 0), and the current's shear (CurrentProfile::shear: one-sided at a table's samples,
+// zero at the bed for a power law, whose shear is singular there). No central differences.
+struct FluidGradient {
+  Eigen::Matrix3d velocity = Eigen::Matrix3d::Zero();      // d v / d y
+  Eigen::Matrix3d acceleration = Eigen::Matrix3d::Zero();  // d a / d y
+  Eigen::Vector3d pressure = Eigen::Vector3d::Zero();      // d p / d y
+  Eigen::Vector3d elevation = Eigen::Vector3d::Zero();     // (d eta / dx, d eta / dy, 0), always
+};
+
 class Sea {
  public:
   explicit Sea(Water water) : water_(water) {}
 
-  void addComponent(const WaveComponent& c) { components_.push_back(c); }
-  void setFront(const WaveFront& front) { front_ = front; }
+  void addComponent(const WaveComponent& c);
+  void setFront(const WaveFront& front);
   void setCurrent(const CurrentProfile& current) { current_ = current; }
   void setSurfaceKinematics(SurfaceKinematics k) { surface_ = k; }
 
@@ -41,14 +58,28 @@ class Sea {
   const std::vector<WaveComponent>& components() const { return components_; }
 
   double elevation(const Eigen::Vector3d& x, double t) const;
-  FluidPoint at(const Eigen::Vector3d& x, double t) const;
+  FluidPoint at(const Eigen::Vector3d& x, double t) const { return evaluate(x, t, nullptr); }
+  FluidPoint at(const Eigen::Vector3d& x, double t, FluidGradient& gradient) const {
+    return evaluate(x, t, &gradient);
+  }
 
  private:
-  Envelope envelope(const WaveComponent& c, const Eigen::Vector3d& x, double t) const;
+  // A component's phase and envelope at one point and time.
+  struct Phase {
+    double cos_th, sin_th;
+    Envelope envelope;
+  };
+  Envelope envelope(int c, const Eigen::Vector3d& x, double t) const;
+  // The phases of every component into `phases`, and the elevation with its gradient.
+  double phases(const Eigen::Vector3d& x, double t, std::vector<Phase>& phases,
+                Eigen::Vector3d* elevation_gradient) const;
+  FluidPoint evaluate(const Eigen::Vector3d& x, double t, FluidGradient* gradient) const;
 
   Water water_;
   std::vector<WaveComponent> components_;
+  std::vector<ComponentTerms> terms_;  // one per component
   std::optional<WaveFront> front_;
+  std::vector<ComponentFront> fronts_;  // one per component when there is a front
   CurrentProfile current_ = CurrentProfile::none();
   SurfaceKinematics surface_ = SurfaceKinematics::Wheeler;
 };

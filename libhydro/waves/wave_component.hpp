@@ -1,7 +1,8 @@
 #pragma once
 // One linear (Airy) wave component at finite depth (hydro.md): elevation a cos(theta), theta =
 // k (x cos beta + y sin beta) - omega t + phi, and its velocity, local acceleration and dynamic
-// pressure below the mean level z = 0 over a flat bed at z = -h.
+// pressure below the mean level z = 0 over a flat bed at z = -h, with their gradients in closed
+// form.
 #include <Eigen/Core>
 
 namespace flexmoor::hydro {
@@ -21,18 +22,53 @@ struct WaveComponent {
   Eigen::Vector3d direction() const;  // (cos beta, sin beta, 0)
 };
 
-// The linear kinematics of a sum of components at one point (z <= 0 below the mean level).
+// What of a component does not change with the point and the time, computed once when the sea
+// is built, so that a point costs one sincos and one exp per component.
+struct ComponentTerms {
+  double kx = 0.0, ky = 0.0;  // k cos beta, k sin beta
+  double k = 0.0, omega = 0.0, phase = 0.0, amplitude = 0.0;
+  double velocity = 0.0;      // a omega
+  double acceleration = 0.0;  // a omega^2
+  double pressure = 0.0;      // rho g a
+  // The depth attenuation with e = exp(k z), r = exp(-2 k h) / e^2 (0 in deep water, h = inf or
+  // k h > 350): cosh(k (z + h)) / sinh(k h) = e (1 + r) / (1 - exp(-2 k h)), sinh / sinh the
+  // same with (1 - r), cosh(k (z + h)) / cosh(k h) = e (1 + r) / (1 + exp(-2 k h)).
+  double bed = 0.0;        // exp(-2 k h)
+  double over_sinh = 1.0;  // 1 / (1 - exp(-2 k h))
+  double over_cosh = 1.0;  // 1 / (1 + exp(-2 k h))
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();
+
+  static ComponentTerms of(const WaveComponent& c, double depth, double rho, double g);
+  double theta(const Eigen::Vector3d& x, double t) const {
+    return kx * x.x() + ky * x.y() - omega * t + phase;
+  }
+};
+
+// The linear kinematics of a sum of components at one point (z <= 0 below the mean level), and
+// their partial derivatives: horizontal ones at fixed z (columns x, y; the envelope's slope
+// included) and the one in z.
 struct LinearKinematics {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();  // local, du/dt
   double dynamic_pressure = 0.0;                           // p + rho g z, gauge
+  Eigen::Matrix<double, 3, 2> velocity_xy = Eigen::Matrix<double, 3, 2>::Zero();
+  Eigen::Matrix<double, 3, 2> acceleration_xy = Eigen::Matrix<double, 3, 2>::Zero();
+  Eigen::Vector2d pressure_xy = Eigen::Vector2d::Zero();
+  Eigen::Vector3d velocity_z = Eigen::Vector3d::Zero();
+  Eigen::Vector3d acceleration_z = Eigen::Vector3d::Zero();
+  double pressure_z = 0.0;
 };
 
-// Adds the component's kinematics at (x, y, z) and time t, scaled by `envelope` (with its time
-// derivative `envelope_rate`, so that the acceleration stays du/dt of the velocity), to `out`.
-// depth may be +inf. rho is the water density, g gravity.
-void addComponentKinematics(const WaveComponent& c, const Eigen::Vector3d& x, double t,
-                            double depth, double rho, double g, double envelope,
-                            double envelope_rate, LinearKinematics& out);
+// The amplitude factor of a component at a point (wave_front.hpp): E, dE/dt, dE/dxi and
+// d(dE/dt)/dxi, xi the distance along the heading.
+struct Envelope {
+  double value = 1.0, rate = 0.0, slope = 0.0, rate_slope = 0.0;
+};
+
+// Adds the component's kinematics at depth z (z <= 0) with cos(theta), sin(theta) given, scaled
+// by the envelope (its rate keeps the acceleration du/dt of the velocity), to `out`; with
+// `gradients` also their partial derivatives.
+void addComponentKinematics(const ComponentTerms& c, double z, double cos_th, double sin_th,
+                            const Envelope& e, bool gradients, LinearKinematics& out);
 
 }  // namespace flexmoor::hydro

@@ -4,9 +4,9 @@
 // phase speed, and a smooth ramp of the amplitude over `ramp_periods` wave periods behind it, so
 // that the structure is not struck impulsively. The ramp is 3 s^2 - 2 s^3 in the distance behind
 // the front, s in [0, 1] over ramp_periods T c_front.
-namespace flexmoor::hydro {
+#include "libhydro/waves/wave_component.hpp"
 
-struct WaveComponent;
+namespace flexmoor::hydro {
 
 struct WaveFront {
   enum class Speed { Group, Phase };
@@ -15,12 +15,16 @@ struct WaveFront {
   double ramp_periods = 1.0;  // 0: the full amplitude right behind the front
 };
 
-// The amplitude factor E in [0, 1] of `c` at distance xi along its heading and time t, and its
-// time derivative dE/dt.
-struct Envelope {
-  double value = 1.0, rate = 0.0;
+// The front as one component sees it: its speed (group or phase, from the dispersion relation)
+// and the ramp's length, computed once when the sea is built.
+struct ComponentFront {
+  double start = 0.0, speed = 0.0, ramp = 0.0;
 };
-Envelope frontEnvelope(const WaveFront& front, const WaveComponent& c, double xi, double t,
-                       double depth, double g);
+ComponentFront componentFront(const WaveFront& front, const WaveComponent& c, double depth,
+                              double g);
+
+// The amplitude factor E in [0, 1] of the component at distance xi along its heading and time
+// t, with dE/dt, dE/dxi and d(dE/dt)/dxi (wave_component.hpp).
+Envelope frontEnvelope(const ComponentFront& front, double xi, double t);
 
 }  // namespace flexmoor::hydro
