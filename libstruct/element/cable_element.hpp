@@ -33,6 +33,7 @@ class CableElement final : public Element {
   void mass(const ElementContext& c, MassKind kind, Eigen::MatrixXd& M) const override;
   void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
                 Eigen::VectorXd& p) const override;
+  bool takesLineLoads() const override { return true; }
   void lineLoad(const ElementContext& c, const model::LineLoad& load, Eigen::VectorXd& p,
                 LoadMatrices* J) const override;
   bool hasDamping() const override;

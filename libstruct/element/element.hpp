@@ -71,6 +71,8 @@ class Element {
   // Nodal loads p = int N^T f ds of a line load f evaluated at the integration points on the
   // current configuration; when J is given, also its matrices (-dp/du, -dp/du', -dp/du'') from
   // int N^T (df/dq) N ds and the derivative of ds. Elements that are not lines add nothing.
+  // Whether lineLoad can be non-zero (line elements): the assembler skips the others.
+  virtual bool takesLineLoads() const { return false; }
   virtual void lineLoad(const ElementContext&, const model::LineLoad&, Eigen::VectorXd& p,
                         LoadMatrices* J) const {
     p.setZero(dofCount());

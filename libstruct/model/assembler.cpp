@@ -113,10 +113,11 @@ void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load) co
     model_.element(e).bodyLoad(context(state, e), model_.gravity(), p);
     load += p;
   }
-  for (const auto& line : model_.lineLoads()) {
-    model_.element(e).lineLoad(context(state, e), *line, p, nullptr);
-    load += p;
-  }
+  if (model_.element(e).takesLineLoads())
+    for (const auto& line : model_.lineLoads()) {
+      model_.element(e).lineLoad(context(state, e), *line, p, nullptr);
+      load += p;
+    }
   load *= state.load_factor;
 }
 
@@ -185,6 +186,7 @@ void Assembler::loadMatrices(const State& state, LoadMatrices& J) const {
   for (const auto& line : model_.lineLoads()) {
     if (!line->stiff()) continue;
     for (int e = 0; e < model_.elementCount(); ++e) {
+      if (!model_.element(e).takesLineLoads()) continue;
       model_.element(e).lineLoad(context(state, e), *line, p, &k);
       scatterMatrix(slot_[e], k.stiffness, J.stiffness, lambda);
       scatterMatrix(slot_[e], k.damping, J.damping, lambda);
