@@ -73,6 +73,7 @@ struct SummarySpec {
     ResultantMax,        // larger principal membrane stress resultant, mean over the element's
                          // integration points (force per current length)
     ResultantMin,        // smaller principal resultant, likewise
+    CpuSeconds,          // the process's CPU time (user + system) when the summary is taken, s
   };
   // How the quantity is taken over its step: from the state that closes it, or, in a dynamic
   // step, from the series of its accepted time steps (summary_series.hpp): at a time, or a

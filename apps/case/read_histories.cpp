@@ -3,10 +3,17 @@
 //   NAME: {type: sine, amplitude: A, period: T, phase: 0, offset: 0}  offset + A sin(2 pi t / T + phase)
 //   NAME: {type: ramp, start: 0 s, duration: D}                       0 -> 1 over [start, start + D]
 //   NAME: {type: table, times: [t0, t1, ...], values: [f0, f1, ...]}  piecewise linear
+//   NAME: {type: rigid_point, arm: [x, y, z], component: x, offset: 0,
+//          surge: {amplitude: 2 m, period: 10 s, phase: 0}, sway, heave,  (lengths)
+//          roll: {amplitude: 5 deg, period: 20 s}, pitch, yaw}           (angles)
+//     the displacement component (a length) of a point of a rigid body at `arm` from the body's
+//     reference point, the body moving by the six sines about it (rigid_point_motion.hpp; each
+//     motion optional); a support moves it with `displacement: [1]` in the case's length unit.
 #include <algorithm>
 #include <cmath>
 
 #include "apps/case/case_builder.hpp"
+#include "libstruct/model/rigid_point_motion.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -45,6 +52,42 @@ std::shared_ptr<const model::TimeFunction> readTable(CaseBuilder& b, Fields& f) 
   return std::make_shared<model::TableFunction>(times, values);
 }
 
+// A sine's amplitude (of the kind given), period, phase and offset (0 unless given).
+std::shared_ptr<const model::TimeFunction> readSine(CaseBuilder& b, Fields& f,
+                                                    const QuantityKind& amplitude_kind) {
+  const YAML::Node* a = f.require("amplitude");
+  const YAML::Node* p = f.require("period");
+  const auto amplitude = a ? b.in.quantity(*a, f.path("amplitude"), amplitude_kind) : std::nullopt;
+  const auto period =
+      p ? b.in.quantity(*p, f.path("period"), kind::kTime, Limit::Positive) : std::nullopt;
+  const double phase = b.in.quantityOr(f, "phase", kind::kNumber, Limit::Any, 0.0);
+  const double offset = b.in.quantityOr(f, "offset", kind::kNumber, Limit::Any, 0.0);
+  if (!amplitude || !period) return nullptr;
+  return std::make_shared<model::SineFunction>(offset, *amplitude, *period, phase);
+}
+
+const char* const kRigidMotions[] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+
+std::shared_ptr<const model::TimeFunction> readRigidPoint(CaseBuilder& b, Fields& f) {
+  const YAML::Node* a = f.require("arm");
+  const YAML::Node* c = f.require("component");
+  const auto arm = a ? b.in.vector3(*a, f.path("arm"), kind::kLength) : std::nullopt;
+  const auto component =
+      c ? b.in.choice<int>(*c, f.path("component"), {{"x", 0}, {"y", 1}, {"z", 2}}) : std::nullopt;
+  const double offset = b.in.quantityOr(f, "offset", kind::kLength, Limit::Any, 0.0);
+  std::array<std::shared_ptr<const model::TimeFunction>, 6> motions;
+  bool ok = arm && component;
+  for (int dof = 0; dof < 6; ++dof) {
+    const YAML::Node* m = f.find(kRigidMotions[dof]);
+    if (!m) continue;
+    Fields sine(b.diag, *m, f.path(kRigidMotions[dof]), {"amplitude", "period", "phase"});
+    motions[dof] = readSine(b, sine, dof < 3 ? kind::kLength : kind::kNumber);
+    ok = ok && motions[dof];
+  }
+  if (!ok) return nullptr;
+  return std::make_shared<model::RigidPointMotion>(motions, *arm, *component, offset);
+}
+
 std::shared_ptr<const model::TimeFunction> readHistory(CaseBuilder& b, const MapEntry& e) {
   const std::string path = childPath("histories", e.key);
   const std::string type = peekText(e.value, "type");
@@ -53,20 +96,13 @@ std::shared_ptr<const model::TimeFunction> readHistory(CaseBuilder& b, const Map
                ? std::vector<std::string>{"type", "amplitude", "period", "phase", "offset"}
            : type == "ramp"  ? std::vector<std::string>{"type", "start", "duration"}
            : type == "table" ? std::vector<std::string>{"type", "times", "values"}
-                             : std::vector<std::string>{"type"});
+           : type == "rigid_point"
+               ? std::vector<std::string>{"type", "arm", "component", "offset", "surge", "sway",
+                                          "heave", "roll", "pitch", "yaw"}
+               : std::vector<std::string>{"type"});
   const YAML::Node* t = f.require("type");
   if (!t) return nullptr;
-  if (type == "sine") {
-    const YAML::Node* a = f.require("amplitude");
-    const YAML::Node* p = f.require("period");
-    const auto amplitude = a ? b.in.quantity(*a, f.path("amplitude"), kind::kNumber) : std::nullopt;
-    const auto period =
-        p ? b.in.quantity(*p, f.path("period"), kind::kTime, Limit::Positive) : std::nullopt;
-    const double phase = b.in.quantityOr(f, "phase", kind::kNumber, Limit::Any, 0.0);
-    const double offset = b.in.quantityOr(f, "offset", kind::kNumber, Limit::Any, 0.0);
-    if (!amplitude || !period) return nullptr;
-    return std::make_shared<model::SineFunction>(offset, *amplitude, *period, phase);
-  }
+  if (type == "sine") return readSine(b, f, kind::kNumber);
   if (type == "ramp") {
     const double start = b.in.quantityOr(f, "start", kind::kTime, Limit::NonNegative, 0.0);
     const YAML::Node* d = f.require("duration");
@@ -76,7 +112,9 @@ std::shared_ptr<const model::TimeFunction> readHistory(CaseBuilder& b, const Map
     return std::make_shared<model::RampFunction>(start, *duration);
   }
   if (type == "table") return readTable(b, f);
-  b.in.choice<int>(*t, f.path("type"), {{"sine", 0}, {"ramp", 1}, {"table", 2}});
+  if (type == "rigid_point") return readRigidPoint(b, f);
+  b.in.choice<int>(*t, f.path("type"),
+                   {{"sine", 0}, {"ramp", 1}, {"table", 2}, {"rigid_point", 3}});
   return nullptr;
 }
 

@@ -10,8 +10,8 @@ namespace {
 using Quantity = SummarySpec::Quantity;
 
 // What a quantity is measured on: a node, one end of a cable or spring, a membrane element, a mode
-// of a modes step, the whole model, or a named line.
-enum class Target { Node, ElementEnd, Membrane, Mode, Model, Line };
+// of a modes step, the whole model, a named line, or the run itself (its cost).
+enum class Target { Node, ElementEnd, Membrane, Mode, Model, Line, Run };
 
 // The unit a quantity is reported in. A support reaction of an axisymmetric model is per radian
 // of circumference, like every force of its meridian (a hoop cable's tension is a whole force).
@@ -117,6 +117,7 @@ const std::vector<std::pair<std::string, QuantityInfo>>& quantities() {
       {"resultant_min", {Quantity::ResultantMin, 0, Measure::ForcePerLength, Target::Membrane}},
       {"frequency", {Quantity::Frequency, 0, Measure::AngularFrequency, Target::Mode}},
       {"period", {Quantity::Period, 0, Measure::Time, Target::Mode}},
+      {"cpu_seconds", {Quantity::CpuSeconds, 0, Measure::Time, Target::Run}},
   };
   return table;
 }
@@ -434,6 +435,13 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
     const YAML::Node* l = f.require("line");
     if (!l || !readSeabedLine(b, *l, f.path("line"), s)) return std::nullopt;
   }
+  if (info.target == Target::Run)
+    for (const char* key : {"step", "at", "stat", "window"})
+      if (const YAML::Node* n = f.find(key)) {
+        b.diag.error(*n, f.path(key) + ": not used by " + q->Scalar() +
+                             " (the CPU time of the whole run, taken when it ends)");
+        return std::nullopt;
+      }
   if (!step) return std::nullopt;
   s.step = *step;
   const int index = *step < 0 ? static_cast<int>(b.c.steps.size()) - 1 : *step;

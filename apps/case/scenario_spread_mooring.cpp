@@ -12,9 +12,12 @@
 //   line_types:                                    # one section each
 //     chain: {diameter, mass_per_length, EA, weight_in_water (a check), compression,
 //             strain: engineering (the catenary's and MoorDyn's law; or green, Eq. 2.53),
-//             Cn, Ct, Ca, CaAx, tangential_drag_area, per_length}
+//             Cn, Ct, Ca, CaAx, tangential_drag_area, per_length,
+//             damping: {BA: N*s} (axial Kelvin-Voigt, MoorDyn's BA; or {zeta: ...})}
 //   mooring_lines:
 //     - {anchor: [x, y, z], fairlead: [x, y, z], length, type: chain, elements: 20, order: 3}
+//   platform: {reference: [x, y, z], surge: {amplitude, period, phase}, sway, heave, roll,
+//              pitch, yaw}  # optional: the fairleads carried by it (scenario_platform.hpp)
 //   statics: {...}           # keys of the static step (default: one increment)
 //   dynamic: {...}           # optional: a dynamic step after it
 //   steps:, summary:, figure:, histories:   # the case's own, instead of the scenario's
@@ -28,13 +31,17 @@
 // held at the bed's level, carries a little of the laid part's weight, a small negative value)
 // and length_on_seabed_k.
 //
-// The fairleads are fixed here: each is a support of line_k.end with the displacement that takes
-// the reference end to the fairlead (fairleadSupport below), the one place where a platform's
-// prescribed motion will move them.
+// Each fairlead is a support of line_k.end with the displacement that takes the reference end to
+// the fairlead (fairleadSupport below). With `platform:`, the fairleads are points of the rigid
+// platform: each dof of the support follows a history of type rigid_point (named
+// line_k.fairlead_x, _y, _z), the fairlead's rest position plus the platform's motion, its velocity
+// and acceleration those of the rigid motion (v + omega x r); the statics hold the platform where
+// the motion puts it at t = 0.
 #include <cmath>
 #include <optional>
 
 #include "apps/case/scenario.hpp"
+#include "apps/case/scenario_platform.hpp"
 #include "apps/case/scenario_yaml.hpp"
 #include "apps/case/units.hpp"
 #include "apps/case/yaml_input.hpp"
@@ -64,7 +71,7 @@ std::optional<LineType> readLineType(Input& in, const MapEntry& e, double rho, d
   Diagnostics& diag = in.diag;
   Fields f(diag, e.value, childPath("line_types", e.key),
            {"diameter", "mass_per_length", "EA", "weight_in_water", "compression", "strain", "Cn",
-            "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length"});
+            "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length", "damping"});
   const auto need = [&](const char* key, const QuantityKind& kind) {
     const YAML::Node* n = f.require(key);
     return n ? in.quantity(*n, f.path(key), kind, Limit::Positive) : std::nullopt;
@@ -148,15 +155,30 @@ YAML::Node point(const Eigen::Vector3d& p) {
   return flowSequence({scenarioNumber(p.x()), scenarioNumber(p.y()), scenarioNumber(p.z())});
 }
 
-// The fairlead's support: line_k.end held at the fairlead (its reference end moved there).
-// Platform motion goes here: the displacement of a point of a rigid body about its reference.
-YAML::Node fairleadSupport(const std::string& name, const Eigen::Vector3d& reference_end,
-                           const Eigen::Vector3d& fairlead) {
-  YAML::Node s;
-  s["node"] = name + ".end";
-  s["fix"] = flowSequence({"x", "y", "z"});
-  s["displacement"] = point(fairlead - reference_end);
-  return s;
+// The fairlead's supports: line_k.end held at the fairlead (its reference end moved there), or
+// each of its dofs carried by the platform (displacement 1 times its history, in length units).
+void addFairleadSupports(YAML::Node& doc, const std::string& name,
+                         const Eigen::Vector3d& reference_end, const Eigen::Vector3d& fairlead,
+                         const std::optional<PlatformMotion>& platform) {
+  if (!platform) {
+    YAML::Node s;
+    s["node"] = name + ".end";
+    s["fix"] = flowSequence({"x", "y", "z"});
+    s["displacement"] = point(fairlead - reference_end);
+    doc["supports"].push_back(s);
+    return;
+  }
+  for (int k = 0; k < 3; ++k) {
+    const std::string axis(1, "xyz"[k]);
+    const std::string history = name + ".fairlead_" + axis;
+    doc["histories"][history] = platformPointHistory(*platform, fairlead, reference_end, k);
+    YAML::Node s;
+    s["node"] = name + ".end";
+    s["fix"] = flowSequence({axis});
+    s["displacement"] = flowSequence({"1"});
+    s["history"] = history;
+    doc["supports"].push_back(s);
+  }
 }
 
 YAML::Node summaryItem(const char* quantity, const char* key, const std::string& value,
@@ -174,15 +196,17 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
   const UnitSystem units = scenarioUnits(root);
   Input in(diag, units);
   std::vector<std::string> keys = {
-      "name",    "title",   "units",   "scenario",  "water",      "gravity",
-      "seabed",  "waves",   "current", "histories", "line_types", "mooring_lines",
-      "statics", "dynamic", "steps",   "summary",   "figure"};
+      "name",     "title",   "units",   "scenario",  "water",      "gravity",
+      "seabed",   "waves",   "current", "histories", "line_types", "mooring_lines",
+      "platform", "statics", "dynamic", "steps",     "summary",    "figure"};
   keys.insert(keys.end(), scenarioGeneratedKeys().begin(), scenarioGeneratedKeys().end());
   Fields top(diag, root, "", keys);
   refuseGeneratedKeys(diag, top, "spread_mooring", "line_types: and mooring_lines:,");
   const ScenarioWater water = readScenarioWater(in, top, units);
   const double rho = water.density, depth = water.depth, g = water.gravity;
 
+  std::optional<PlatformMotion> platform;
+  if (const YAML::Node* n = top.find("platform")) platform = readPlatform(in, *n);
   std::map<std::string, LineType> types;
   if (const YAML::Node* n = top.require("line_types"))
     for (const MapEntry& e : mapEntries(diag, *n, "line_types"))
@@ -242,6 +266,7 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
     for (const char* key : {"Cn", "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length"})
       if (const YAML::Node v = t.node[key]) hydro[key] = v;
     section["hydro"] = hydro;
+    if (const YAML::Node damping = t.node["damping"]) section["damping"] = damping;
     doc["sections"][name] = section;
   }
   int elements_before = 0;
@@ -265,7 +290,7 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
     anchor["node"] = name + ".start";
     anchor["fix"] = flowSequence({"x", "y", "z"});
     doc["supports"].push_back(anchor);
-    doc["supports"].push_back(fairleadSupport(name, end, m.fairlead));
+    addFairleadSupports(doc, name, end, m.fairlead, platform);
     if (!top.find("summary")) {
       const std::string k = std::to_string(i + 1);
       const std::string first = std::to_string(elements_before + 1);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -136,6 +137,8 @@ double unscaled(const SummarySpec& spec, const model::Model& model, const Summar
       return principalResultants(spec, model, source).first;
     case Q::ResultantMin:
       return principalResultants(spec, model, source).second;
+    case Q::CpuSeconds:  // the whole run's, read, steps and writing, at the summary's evaluation
+      return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
   }
   throw std::logic_error("summary \"" + spec.name + "\": unknown quantity");
 }

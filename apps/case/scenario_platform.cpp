@@ -1,0 +1,72 @@
+#include "apps/case/scenario_platform.hpp"
+
+#include "apps/case/scenario_yaml.hpp"
+#include "apps/case/units.hpp"
+
+namespace flexmoor::app {
+namespace {
+
+const char* const kMotions[] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+
+std::optional<PlatformSine> readSine(Input& in, const YAML::Node& n, const std::string& path,
+                                     const QuantityKind& amplitude_kind) {
+  Fields f(in.diag, n, path, {"amplitude", "period", "phase"});
+  const YAML::Node* a = f.require("amplitude");
+  const YAML::Node* p = f.require("period");
+  const auto amplitude = a ? in.quantity(*a, f.path("amplitude"), amplitude_kind) : std::nullopt;
+  const auto period =
+      p ? in.quantity(*p, f.path("period"), kind::kTime, Limit::Positive) : std::nullopt;
+  const double phase = in.quantityOr(f, "phase", kind::kNumber, Limit::Any, 0.0);
+  if (!amplitude || !period) return std::nullopt;
+  return PlatformSine{*amplitude, *period, phase};
+}
+
+}  // namespace
+
+std::optional<PlatformMotion> readPlatform(Input& in, const YAML::Node& n) {
+  Fields f(in.diag, n, "platform", {"reference", "surge", "sway", "heave", "roll", "pitch", "yaw"});
+  PlatformMotion p;
+  bool ok = n.IsMap();
+  if (const YAML::Node* r = f.find("reference")) {
+    const auto reference = in.vector3(*r, f.path("reference"), kind::kLength);
+    ok = ok && reference;
+    if (reference) p.reference = *reference;
+  }
+  for (int dof = 0; dof < 6; ++dof)
+    if (const YAML::Node* m = f.find(kMotions[dof])) {
+      p.motions[dof] =
+          readSine(in, *m, f.path(kMotions[dof]), dof < 3 ? kind::kLength : kind::kNumber);
+      ok = ok && p.motions[dof];
+    }
+  if (ok && n.IsMap() && !f.find("surge") && !f.find("sway") && !f.find("heave") &&
+      !f.find("roll") && !f.find("pitch") && !f.find("yaw")) {
+    in.diag.error(n,
+                  "platform: no motion (expected at least one of surge, sway, heave, roll, "
+                  "pitch, yaw)");
+    ok = false;
+  }
+  if (!ok) return std::nullopt;
+  return p;
+}
+
+YAML::Node platformPointHistory(const PlatformMotion& p, const Eigen::Vector3d& point,
+                                const Eigen::Vector3d& from, int component) {
+  YAML::Node h;
+  h["type"] = "rigid_point";
+  const Eigen::Vector3d arm = point - p.reference;
+  h["arm"] =
+      flowSequence({scenarioNumber(arm.x()), scenarioNumber(arm.y()), scenarioNumber(arm.z())});
+  h["component"] = std::string(1, "xyz"[component]);
+  h["offset"] = scenarioNumber(point[component] - from[component]);
+  for (int dof = 0; dof < 6; ++dof)
+    if (const auto& m = p.motions[dof]) {
+      YAML::Node sine;
+      sine["amplitude"] = scenarioNumber(m->amplitude);
+      sine["period"] = scenarioNumber(m->period);
+      sine["phase"] = scenarioNumber(m->phase);
+      h[kMotions[dof]] = sine;
+    }
+  return h;
+}
+
+}  // namespace flexmoor::app

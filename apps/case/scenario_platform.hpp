@@ -1,0 +1,40 @@
+#pragma once
+// A scenario's rigid platform with a prescribed 6-dof motion about its reference point
+// (`platform:` of scenario: spread_mooring), and the histories that move the points it carries
+// (histories of type rigid_point, read_histories.cpp):
+//
+//   platform:
+//     reference: [0, 0, 0 m]                                # default: the origin
+//     surge: {amplitude: 2 m, period: 10 s, phase: 0}       # sway, heave: lengths too
+//     pitch: {amplitude: 3 deg, period: 25 s, phase: 0.5}   # roll, pitch, yaw: angles
+//
+// each motion optional, each a sine A sin(2 pi t / T + phase); the rotation is
+// R = Rz(yaw) Ry(pitch) Rx(roll) (libstruct/model/rigid_point_motion.hpp).
+#include <yaml-cpp/yaml.h>
+
+#include <Eigen/Dense>
+#include <array>
+#include <optional>
+
+#include "apps/case/yaml_input.hpp"
+
+namespace flexmoor::app {
+
+struct PlatformSine {
+  double amplitude = 0.0, period = 0.0, phase = 0.0;
+};
+
+struct PlatformMotion {
+  Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+  std::array<std::optional<PlatformSine>, 6> motions;  // surge, sway, heave, roll, pitch, yaw
+};
+
+// Reads `platform:` (errors at their lines in in.diag; nullopt when wrong).
+std::optional<PlatformMotion> readPlatform(Input& in, const YAML::Node& n);
+
+// The history of component (0, 1, 2 = x, y, z) of the displacement that takes a support from
+// `from` to the platform's point now at `point`: (point - from) at rest, plus the platform's motion.
+YAML::Node platformPointHistory(const PlatformMotion& p, const Eigen::Vector3d& point,
+                                const Eigen::Vector3d& from, int component);
+
+}  // namespace flexmoor::app
