@@ -47,11 +47,9 @@ double displacementNorm(const model::Assembler& assembler, const Eigen::VectorXd
   return u_norm > 0.0 ? du.norm() / u_norm : du.norm();
 }
 
-void putAtRest(const model::Assembler& assembler, model::State& state) {
-  const model::Model& m = assembler.model();
-  for (int n = 0; n < m.nodeCount(); ++n)
-    for (int k = 0; k < 3; ++k)
-      if (m.equation(n, k) >= 0) state.velocity(k, n) = state.acceleration(k, n) = 0.0;
+void putAtRest(model::State& state) {
+  state.velocity.setZero();
+  state.acceleration.setZero();
   state.motion = {};
 }
 

@@ -43,9 +43,11 @@ bool converged(const Convergence& c, double displacement_norm, double residual_n
 double displacementNorm(const model::Assembler& assembler, const Eigen::VectorXd& du,
                         const model::NodalField& u);
 
-// A static or relaxation step finds the structure at rest: the free dofs' velocity and
-// acceleration are set to zero and the motion record is cleared (the supports keep theirs).
-void putAtRest(const model::Assembler& assembler, model::State& state);
+// A static or relaxation step finds the structure at rest: every dof's velocity and
+// acceleration are set to zero, a moving support's too (its history gives its place at the
+// state's time, not a rate: a fairlead on a moving platform must not drag viscous forces into
+// the statics), and the motion record is cleared. Called after applyPrescribed.
+void putAtRest(model::State& state);
 
 // Displacement of all dofs as one full vector (3 * node + component).
 inline Eigen::Map<const Eigen::VectorXd> asVector(const model::NodalField& field) {

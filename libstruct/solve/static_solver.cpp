@@ -63,7 +63,7 @@ bool factorizeRegularised(LinearSolver& linear, model::SparseMatrix& K, const So
 
 StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
                          const StaticOptions& options, const SolveLog& log) {
-  putAtRest(assembler, state);
+  putAtRest(state);
   if (options.control == LoadControl::ArcLength)
     return solveArcLength(assembler, state, options, log);
   StaticReport report;
@@ -78,6 +78,7 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
     const model::State converged_state = state;
     state.load_factor = start + (options.load_factor - start) * inc / options.increments;
     assembler.applyPrescribed(state);
+    putAtRest(state);
     IterationRecord rec{inc, 0, state.load_factor, 0.0, 0.0};
     int updates = 0;
     bool done = false;

@@ -96,9 +96,9 @@ RelaxationReport relax(const model::Assembler& assembler, model::State& state,
   NewtonTrace trace;
   double stiffness = 0.0;
   LargestMove move;  // the largest change of the last step
-  putAtRest(assembler, state);
   state.load_factor = o.load_factor;
   assembler.applyPrescribed(state);
+  putAtRest(state);
   double C = o.damping;
   double mu = o.initial_damping_factor;
   for (int step = 1; step <= o.max_steps; ++step) {
