@@ -321,9 +321,12 @@ void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scrat
   checkMemos(state, scratch);
   if (!scratch.internal_memo) element.internalForce(context(state, e), scratch.force, nullptr);
   const Eigen::VectorXd& f = scratch.internal_memo ? internal_memo_.elements[e] : scratch.force;
+  // A memo without per-element loads: the structure has none (no gravity, no line loads).
   const bool loaded = !scratch.external_memo || external_memo_.per_element;
   if (!scratch.external_memo) elementLoad(state, e, scratch.load);
-  const Eigen::VectorXd& p = scratch.external_memo ? external_memo_.elements[e] : scratch.load;
+  const Eigen::VectorXd* p = !loaded                 ? nullptr
+                             : scratch.external_memo ? &external_memo_.elements[e]
+                                                     : &scratch.load;
   const bool damped = element.hasDamping();
   if (damped) element.dampingForce(context(state, e), scratch.damping, nullptr);
   const auto& index = full_index_[e];
@@ -342,7 +345,7 @@ void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scrat
     const int local = end == 0 ? 0 : last;
     const int next = end == 0 ? 1 : last - 1;
     Eigen::Vector3d force = f.segment<3>(3 * local);
-    if (loaded) force -= p.segment<3>(3 * local);
+    if (loaded) force -= p->segment<3>(3 * local);
     if (damped) force += scratch.damping.segment<3>(3 * local);
     if (accelerating) force += consistent_masses_[e].middleRows<3>(3 * local) * a;
     const double magnitude = force.norm();
