@@ -214,17 +214,9 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
     doc["summary"]["anchor_tension_max"] = quantity("end_tension", "max");
   }
   if (!top.find("figure")) {
-    for (const char* q : {"position_x", "position_z", "speed"}) {
-      YAML::Node n;
-      n["quantity"] = q;
-      n["node"] = "cable.end";
-      doc["figure"]["series"].push_back(n);
-    }
-    YAML::Node tension;
-    tension["quantity"] = "tension_end";
-    tension["element"] = 1;
-    tension["end"] = 1;
-    doc["figure"]["series"].push_back(tension);
+    for (const char* q : {"position_x", "position_z", "speed"})
+      doc["figure"]["series"].push_back(nodeSeries(q, YAML::Node("cable.end")));
+    doc["figure"]["series"].push_back(firstElementTensionSeries());
   }
   if (steps) {
     doc["steps"] = *steps;

@@ -215,17 +215,9 @@ YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
   if (!top.find("figure")) {
     const double ring[4][2] = {{0.0, zc + R}, {0.0, zc - R}, {R, zc}, {-R, zc}};
     for (const auto& p : ring)
-      for (const char* q : {"displacement_x", "displacement_z"}) {
-        YAML::Node n;
-        n["quantity"] = q;
-        n["node"] = at(p[0], 0.0, p[1]);
-        doc["figure"]["series"].push_back(n);
-      }
-    YAML::Node tension;
-    tension["quantity"] = "tension_end";
-    tension["element"] = 1;
-    tension["end"] = 1;
-    doc["figure"]["series"].push_back(tension);
+      for (const char* q : {"displacement_x", "displacement_z"})
+        doc["figure"]["series"].push_back(nodeSeries(q, at(p[0], 0.0, p[1])));
+    doc["figure"]["series"].push_back(firstElementTensionSeries());
   }
   if (steps) {
     doc["steps"] = *steps;

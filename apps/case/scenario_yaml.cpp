@@ -31,6 +31,21 @@ const std::vector<std::string>& scenarioGeneratedKeys() {
   return keys;
 }
 
+YAML::Node nodeSeries(const std::string& quantity, const YAML::Node& node) {
+  YAML::Node n;
+  n["quantity"] = quantity;
+  n["node"] = node;
+  return n;
+}
+
+YAML::Node firstElementTensionSeries() {
+  YAML::Node tension;
+  tension["quantity"] = "tension_end";
+  tension["element"] = 1;
+  tension["end"] = 1;
+  return tension;
+}
+
 void refuseGeneratedKeys(Diagnostics& diag, const Fields& top, const std::string& scenario,
                          const std::string& own_keys) {
   for (const std::string& key : scenarioGeneratedKeys())

@@ -21,6 +21,10 @@ YAML::Node flowSequence(std::initializer_list<std::string> items);
 UnitSystem scenarioUnits(const YAML::Node& root);
 // The model's keys a scenario writes: a case that names a scenario does not give them itself.
 const std::vector<std::string>& scenarioGeneratedKeys();
+// A figure series `{quantity, node}` (the node a name or a map such as {at: [x, y, z]}), and the
+// series of the first element's tension at its first end.
+YAML::Node nodeSeries(const std::string& quantity, const YAML::Node& node);
+YAML::Node firstElementTensionSeries();
 // Reports each generated key the case gives itself, naming the scenario and `own_keys` (the
 // scenario's keys that stand for them, as text).
 void refuseGeneratedKeys(Diagnostics& diag, const Fields& top, const std::string& scenario,
