@@ -135,7 +135,8 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
   const solve::DynamicReport& r = integrator.report();
   for (const auto& [spec, value] : series.values()) over_time_[spec] = value;
   log_ << "  " << r.steps << " time steps, " << r.iterations << " Newton iterations, "
-       << r.tangent_updates << " tangent updates, " << r.cuts << " step cuts\n";
+       << r.tangent_updates << " tangent updates, " << r.backtracks << " backtracks, " << r.cuts
+       << " step cuts\n";
   streamed_ = true;
   return frame(i, step.name, state);
 }

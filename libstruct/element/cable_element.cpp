@@ -1,5 +1,6 @@
 #include "libstruct/element/cable_element.hpp"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -175,19 +176,28 @@ void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
     const double ds = (per_current_length ? y1_norm : x1_norm) * rule_.weights[q];
     for (int I = 0; I < N; ++I) p.template segment<3>(3 * I) += (Lv(I) * ds) * f.force;
     if (!J) continue;
-    // dt/dy,1 = (I - t t^T) / |y,1|; d(ds)/dy,1 = t^T dxi on the deformed line.
-    const Matrix3d d_tangent =
-        f.d_tangent * (Matrix3d::Identity() - point.tangent * point.tangent.transpose()) / y1_norm;
-    const Vector3d d_ds =
-        per_current_length ? Vector3d(point.tangent * rule_.weights[q]) : Vector3d::Zero();
+    // d(ds f)/dy,1 = ds df/dt dt/dy,1 + f d(ds)/dy,1, with dt/dy,1 = (I - t t^T) / |y,1| and
+    // d(ds)/dy,1 = t^T dxi on the deformed line (zero on the unstretched one).
+    Matrix3d d_axis =
+        (ds / y1_norm) * (f.d_tangent - (f.d_tangent * point.tangent) * point.tangent.transpose());
+    if (per_current_length) d_axis += (rule_.weights[q] * f.force) * point.tangent.transpose();
+    const Matrix3d d_position = ds * f.d_position;
+    // The force at the point depends on node K through y = sum L_K y_K and y,1 = sum L_K' y_K.
+    std::array<Matrix3d, N> by_node;
+    for (int K = 0; K < N; ++K) by_node[K] = Lv(K) * d_position + dL(K) * d_axis;
     for (int I = 0; I < N; ++I)
-      for (int K = 0; K < N; ++K) {
-        const Matrix3d dp = Lv(I) * (ds * (f.d_position * Lv(K) + d_tangent * dL(K)) +
-                                     dL(K) * f.force * d_ds.transpose());
-        J->stiffness.template block<3, 3>(3 * I, 3 * K) -= dp;
-        J->damping.template block<3, 3>(3 * I, 3 * K) -= (Lv(I) * Lv(K) * ds) * f.d_velocity;
-        J->mass.template block<3, 3>(3 * I, 3 * K) -= (Lv(I) * Lv(K) * ds) * f.d_acceleration;
-      }
+      for (int K = 0; K < N; ++K)
+        J->stiffness.template block<3, 3>(3 * I, 3 * K) -= Lv(I) * by_node[K];
+    // Damping and added mass: N_I N_K ds times df/du' and df/du'' (skipped when zero, a seabed's
+    // added mass).
+    for (auto [d, out] :
+         {std::pair{&f.d_velocity, &J->damping}, std::pair{&f.d_acceleration, &J->mass}}) {
+      if (d->isZero(0.0)) continue;
+      const Matrix3d weighted = ds * *d;
+      for (int I = 0; I < N; ++I)
+        for (int K = 0; K < N; ++K)
+          out->template block<3, 3>(3 * I, 3 * K) -= (Lv(I) * Lv(K)) * weighted;
+    }
   }
 }
 

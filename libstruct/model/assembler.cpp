@@ -75,12 +75,23 @@ void Assembler::scatterMatrix(const std::vector<int>& slots, const ElementMatrix
     }
 }
 
+void Assembler::zeroOnPattern(SparseMatrix& m) const {
+  // The column starts and the count of nonzeros identify the pattern among the matrices this
+  // assembler fills (comparing the row indices too would cost as much as the copy it saves).
+  const Eigen::Index n = pattern_.outerSize();
+  const bool same =
+      m.isCompressed() && m.rows() == pattern_.rows() && m.cols() == pattern_.cols() &&
+      m.nonZeros() == pattern_.nonZeros() &&
+      std::equal(pattern_.outerIndexPtr(), pattern_.outerIndexPtr() + n + 1, m.outerIndexPtr());
+  if (same)
+    m.coeffs().setZero();
+  else
+    m = pattern_;  // the pattern's values are zero
+}
+
 void Assembler::internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const {
   force.setZero(3 * model_.nodeCount());
-  if (K) {
-    *K = pattern_;
-    K->coeffs().setZero();
-  }
+  if (K) zeroOnPattern(*K);
   ForceMemo& memo = internal_memo_;
   memo.elements.resize(model_.elementCount());
   Eigen::MatrixXd k;
@@ -106,32 +117,43 @@ bool Assembler::sameState(const ForceMemo& m, const State& s) {
          m.velocity == s.velocity && m.acceleration == s.acceleration;
 }
 
-void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load) const {
+void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load,
+                            LoadMatrices* J) const {
   load.setZero(model_.element(e).dofCount());
   Eigen::VectorXd p;
   if (!model_.gravity().isZero()) {
     model_.element(e).bodyLoad(context(state, e), model_.gravity(), p);
     load += p;
   }
+  const double lambda = state.load_factor;
   if (model_.element(e).takesLineLoads())
     for (const auto& line : model_.lineLoads()) {
-      model_.element(e).lineLoad(context(state, e), *line, p, nullptr);
+      const bool jacobians = J && line->stiff();
+      model_.element(e).lineLoad(context(state, e), *line, p,
+                                 jacobians ? &element_jacobians_ : nullptr);
       load += p;
+      if (!jacobians) continue;
+      scatterMatrix(slot_[e], element_jacobians_.stiffness, J->stiffness, lambda);
+      scatterMatrix(slot_[e], element_jacobians_.damping, J->damping, lambda);
+      scatterMatrix(slot_[e], element_jacobians_.mass, J->mass, lambda);
     }
-  load *= state.load_factor;
+  load *= lambda;
 }
 
-void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
+void Assembler::externalLoad(const State& state, Eigen::VectorXd& load, LoadMatrices* J) const {
+  if (J)
+    for (SparseMatrix* m : {&J->stiffness, &J->damping, &J->mass}) zeroOnPattern(*m);
+  const double lambda = state.load_factor;
   load.setZero(3 * model_.nodeCount());
   for (const NodalLoad& p : model_.nodalLoads())
-    if (!p.history) load.segment<3>(3 * p.node) += state.load_factor * p.force;
+    if (!p.history) load.segment<3>(3 * p.node) += lambda * p.force;
   ForceMemo& memo = external_memo_;
   memo.per_element = !model_.gravity().isZero() || !model_.lineLoads().empty();
   if (memo.per_element) {
     memo.elements.resize(model_.elementCount());
     for (int e = 0; e < model_.elementCount(); ++e) {
       Eigen::VectorXd& p = memo.elements[e];
-      elementLoad(state, e, p);
+      elementLoad(state, e, p, J);
       const auto& index = full_index_[e];
       for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
     }
@@ -139,9 +161,17 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
   Eigen::VectorXd p;
   for (const NodalLoad& p : model_.nodalLoads())
     if (p.history) load.segment<3>(3 * p.node) += p.history->value(state.time) * p.force;
-  for (const auto& node_load : model_.nodeLoads())
-    load.segment<3>(3 * node_load->node()) +=
-        state.load_factor * node_load->evaluate(nodePoint(state, node_load->node()), false).force;
+  const auto& node_loads = model_.nodeLoads();
+  for (size_t i = 0; i < node_loads.size(); ++i) {
+    const bool jacobians = J && node_loads[i]->stiff();
+    const PointForce f =
+        node_loads[i]->evaluate(nodePoint(state, node_loads[i]->node()), jacobians);
+    load.segment<3>(3 * node_loads[i]->node()) += lambda * f.force;
+    if (!jacobians) continue;
+    scatterMatrix(node_slot_[i], f.d_position, J->stiffness, -lambda);
+    scatterMatrix(node_slot_[i], f.d_velocity, J->damping, -lambda);
+    scatterMatrix(node_slot_[i], f.d_acceleration, J->mass, -lambda);
+  }
   for (const PressureLoad& pressure : model_.pressures()) {
     const double value = pressureFactor(pressure, state);
     for (int e : pressure.elements) {
@@ -150,12 +180,16 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load) const {
       for (size_t a = 0; a < index.size(); ++a) load(index[a]) += p(a);
     }
   }
-  for (const SurfaceLoadOn& surface : model_.surfaceLoads())
+  for (const SurfaceLoadOn& surface : model_.surfaceLoads()) {
+    const bool jacobians = J && surface.load->stiff();
     for (int e : surface.elements) {
-      model_.element(e).surfaceLoad(context(state, e), *surface.load, p, nullptr);
+      model_.element(e).surfaceLoad(context(state, e), *surface.load, p,
+                                    jacobians ? &element_jacobians_ : nullptr);
       const auto& index = full_index_[e];
-      for (size_t a = 0; a < index.size(); ++a) load(index[a]) += state.load_factor * p(a);
+      for (size_t a = 0; a < index.size(); ++a) load(index[a]) += lambda * p(a);
+      if (jacobians) scatterMatrix(slot_[e], element_jacobians_.stiffness, J->stiffness, lambda);
     }
+  }
   memo.valid = true;
   memo.displacement = state.displacement;
   memo.velocity = state.velocity;
@@ -176,49 +210,16 @@ LoadPoint Assembler::nodePoint(const State& state, int node) const {
 }
 
 void Assembler::loadMatrices(const State& state, LoadMatrices& J) const {
-  for (SparseMatrix* m : {&J.stiffness, &J.damping, &J.mass}) {
-    *m = pattern_;
-    m->coeffs().setZero();
-  }
-  const double lambda = state.load_factor;
-  Eigen::VectorXd p;
-  element::LoadMatrices k;
-  for (const auto& line : model_.lineLoads()) {
-    if (!line->stiff()) continue;
-    for (int e = 0; e < model_.elementCount(); ++e) {
-      if (!model_.element(e).takesLineLoads()) continue;
-      model_.element(e).lineLoad(context(state, e), *line, p, &k);
-      scatterMatrix(slot_[e], k.stiffness, J.stiffness, lambda);
-      scatterMatrix(slot_[e], k.damping, J.damping, lambda);
-      scatterMatrix(slot_[e], k.mass, J.mass, lambda);
-    }
-  }
-  for (const SurfaceLoadOn& surface : model_.surfaceLoads()) {
-    if (!surface.load->stiff()) continue;
-    for (int e : surface.elements) {
-      model_.element(e).surfaceLoad(context(state, e), *surface.load, p, &k);
-      scatterMatrix(slot_[e], k.stiffness, J.stiffness, lambda);
-    }
-  }
-  const auto& node_loads = model_.nodeLoads();
-  for (size_t i = 0; i < node_loads.size(); ++i) {
-    if (!node_loads[i]->stiff()) continue;
-    const PointForce f = node_loads[i]->evaluate(nodePoint(state, node_loads[i]->node()), true);
-    scatterMatrix(node_slot_[i], f.d_position, J.stiffness, -lambda);
-    scatterMatrix(node_slot_[i], f.d_velocity, J.damping, -lambda);
-    scatterMatrix(node_slot_[i], f.d_acceleration, J.mass, -lambda);
-  }
+  Eigen::VectorXd load;
+  externalLoad(state, load, &J);
 }
 
 void Assembler::dampingForce(const State& state, Eigen::VectorXd& force, LoadMatrices* J) const {
   force.setZero(3 * model_.nodeCount());
   if (J)
-    for (SparseMatrix* m : {&J->stiffness, &J->damping, &J->mass}) {
-      *m = pattern_;
-      m->coeffs().setZero();
-    }
+    for (SparseMatrix* m : {&J->stiffness, &J->damping, &J->mass}) zeroOnPattern(*m);
   Eigen::VectorXd f;
-  element::LoadMatrices k;
+  element::LoadMatrices& k = element_jacobians_;
   for (int e : damped_) {
     model_.element(e).dampingForce(context(state, e), f, J ? &k : nullptr);
     const auto& index = full_index_[e];
@@ -267,8 +268,7 @@ void Assembler::inertiaForce(const std::vector<Eigen::MatrixXd>& masses, const S
 }
 
 void Assembler::mass(const State& state, element::MassKind kind, SparseMatrix& M) const {
-  M = pattern_;
-  M.coeffs().setZero();
+  zeroOnPattern(M);
   Eigen::MatrixXd m;
   for (int e = 0; e < model_.elementCount(); ++e) {
     model_.element(e).mass(context(state, e), kind, m);

@@ -28,10 +28,11 @@ class Assembler {
   // Internal force F(u) as a full vector; with K, also the tangent on the free dofs (Eq. 4.48).
   void internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const;
   // External load P at the state's load factor: nodal loads, gravity, line, surface and node
-  // loads, follower pressures.
-  void externalLoad(const State& state, Eigen::VectorXd& load) const;
-  // The motion-dependent loads' matrices at the state (zero when the model has none). Loads that
-  // are not stiff() add nothing.
+  // loads, follower pressures. With J, also the motion-dependent loads' matrices at the state,
+  // from the same evaluation of each load (zero when the model has none; loads that are not
+  // stiff() add nothing to them).
+  void externalLoad(const State& state, Eigen::VectorXd& load, LoadMatrices* J = nullptr) const;
+  // The motion-dependent loads' matrices alone (externalLoad's J).
   void loadMatrices(const State& state, LoadMatrices& J) const;
   // Whether an element has internal damping (a line's axial Kelvin-Voigt term, BA).
   bool hasDamping() const { return !damped_.empty(); }
@@ -87,8 +88,12 @@ class Assembler {
   LoadPoint nodePoint(const State& state, int node) const;
 
   double pressureFactor(const PressureLoad& load, const State& state) const;
-  // Element e's own share of the proportional loads (gravity, line loads) at the load factor.
-  void elementLoad(const State& state, int e, Eigen::VectorXd& load) const;
+  // Element e's own share of the proportional loads (gravity, line loads) at the load factor;
+  // with J, its line loads' matrices are added into J.
+  void elementLoad(const State& state, int e, Eigen::VectorXd& load,
+                   LoadMatrices* J = nullptr) const;
+  // Sets m to the pattern with zero values, without reallocating when m has it already.
+  void zeroOnPattern(SparseMatrix& m) const;
   // Work space of one sweep over the elements at one state, and whether the memos below hold
   // that state's forces (asked once a sweep).
   struct EndForceScratch {
@@ -128,6 +133,7 @@ class Assembler {
   // Lagrangian: they depend on the reference configuration only).
   mutable std::vector<Eigen::MatrixXd> consistent_masses_;
   mutable EndForceScratch results_scratch_;  // elementResults' work space, kept between calls
+  mutable element::LoadMatrices element_jacobians_;  // one element's load matrices, reused
   mutable ForceMemo internal_memo_, external_memo_;
 };
 

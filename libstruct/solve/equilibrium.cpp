@@ -7,10 +7,10 @@
 namespace flexmoor::solve {
 
 Residual outOfBalance(const model::Assembler& assembler, const model::State& state,
-                      model::SparseMatrix* K) {
+                      model::SparseMatrix* K, model::LoadMatrices* J) {
   Eigen::VectorXd F, P;
   assembler.internalForce(state, F, K);
-  assembler.externalLoad(state, P);
+  assembler.externalLoad(state, P, J);
   Residual r;
   r.free = assembler.restrictToFree(P - F);
   r.scale = std::max(P.norm(), F.norm());

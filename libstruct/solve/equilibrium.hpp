@@ -17,9 +17,10 @@ struct Residual {
   double relative() const { return scale > 0.0 ? free.norm() / scale : free.norm(); }
 };
 
-// R = P - F at the state; fills the tangent and the round-off floor when K is given.
+// R = P - F at the state; fills the tangent and the round-off floor when K is given, and the
+// motion-dependent loads' matrices when J is (from the same evaluation of the loads).
 Residual outOfBalance(const model::Assembler& assembler, const model::State& state,
-                      model::SparseMatrix* K);
+                      model::SparseMatrix* K, model::LoadMatrices* J = nullptr);
 
 // The static tangent's share of the motion-dependent loads (load_point.hpp): their stiffness
 // -dP/du at the state added to K (on the assembler's pattern); nothing for a model without them.

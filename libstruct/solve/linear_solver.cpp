@@ -3,6 +3,11 @@
 namespace flexmoor::solve {
 
 bool LinearSolver::factorize(const model::SparseMatrix& A) {
+  if (method_ == Method::Undecided || (method_ == Method::Banded && !band_lu_.fits(A))) {
+    method_ = bandIsNarrow(A, bandOf(A)) ? Method::Banded : Method::Sparse;
+    if (method_ == Method::Banded) band_lu_.analyzePattern(A);
+  }
+  if (method_ == Method::Banded) return band_lu_.factorize(A);
   if (kind_ == MatrixKind::Symmetric) {
     if (!analysed_llt_) {
       llt_.analyzePattern(A);
@@ -32,6 +37,7 @@ bool LinearSolver::factorizeLu(const model::SparseMatrix& A) {
 }
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
+  if (method_ == Method::Banded) return band_lu_.solve(b);
   return use_lu_ ? Eigen::VectorXd(lu_.solve(b)) : Eigen::VectorXd(llt_.solve(b));
 }
 

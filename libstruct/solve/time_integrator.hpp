@@ -10,6 +10,7 @@
 
 #include "libstruct/model/assembler.hpp"
 #include "libstruct/solve/diagnosis.hpp"
+#include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
 #include "libstruct/solve/solve_log.hpp"
 #include "libstruct/solve/solver_options.hpp"
@@ -20,6 +21,7 @@ struct DynamicReport {
   int steps = 0;       // accepted steps, cut sub-steps included
   int iterations = 0;  // Newton iterations over all steps
   int cuts = 0;        // how often a step was halved
+  int backtracks = 0;  // Newton increments halved because they raised the residual
   int tangent_updates = 0;
   int load_matrix_updates = 0;  // evaluations of the motion-dependent loads' matrices
 };
@@ -68,9 +70,12 @@ class TimeIntegrator {
   void applySupports(model::State& next, const model::State& previous, double h) const;
   void initialAcceleration(model::State& s);
   Eigen::VectorXd damping(const Eigen::VectorXd& v_free) const;
-  // The elements' internal damping force F_d on the free dofs at `s` (zero without any).
-  Eigen::VectorXd viscousForce(const model::State& s) const;
-  bool loadMatricesWanted(int iteration) const;
+  // The balance P - F - F_d - C v at x on the free dofs (no inertia), with its scale and floor
+  // (outOfBalance); from the same sweep, the tangent K_ and the internal damping's viscous_ when
+  // `tangent`, the motion loads' loads_ when `loads`.
+  Residual balance(const model::State& x, bool tangent, bool loads);
+  // Whether kept_ belongs to s.
+  bool keptFor(const model::State& s) const;
   void factorEffectiveTangent(double h);
   model::MotionRecord record(const model::State& s) const;
 
@@ -92,7 +97,14 @@ class TimeIntegrator {
   double force_scale_ = 0.0;  // largest force norm of the accepted steps
   double floor_ = 0.0;        // round-off floor of the residual at the last tangent
   NewtonTrace trace_;         // of the last step tried
-  bool singular_ = false;     // the last step tried had a singular effective tangent
+  // What the evaluation that accepted the last step leaves for the next step's start: its
+  // balance and which of K_ / viscous_ and loads_ it computed, at `state`.
+  struct Kept {
+    bool valid = false, tangent = false, loads = false;
+    model::State state;
+    Eigen::VectorXd balance;
+  } kept_;
+  bool singular_ = false;  // the last step tried had a singular effective tangent
 };
 
 }  // namespace flexmoor::solve

@@ -83,20 +83,24 @@ TEST(LoadMatricesNewton, TheyCutTheIterationsPerStepOfALineInAWave) {
   EXPECT_LT(5.0 * iterationsPerStep(with), iterationsPerStep(without));
 }
 
-TEST(LoadMatricesNewton, WithoutThemABuoyantRopeDoesNotConverge) {
+// A rope barely denser than water (910 kg/m^3 against 1025: its added mass is most of its
+// inertia): without the matrices each full Newton increment overshoots, and only the backtracking
+// of the increments that raise the residual carries it; with them Newton converges in a few
+// iterations. Measured: Step 3.8 iterations a step, no backtrack; Off 12.2, with backtracks.
+// Tolerance: Off at least 2.5 times the iterations of Step.
+TEST(LoadMatricesNewton, WithoutThemABuoyantRopeNeedsBacktrackingAndThriceTheIterations) {
   const OceanLine rope = lineInAWave(910.0, 5);
   const solve::DynamicReport with = run(rope, Update::Step, 60);
+  const solve::DynamicReport without = run(rope, Update::Off, 60);
   std::cout << "buoyant rope, dt 0.05 s, 60 steps: Step " << iterationsPerStep(with)
-            << " iterations/step (" << with.cuts << " cuts)\n";
+            << " iterations/step (" << with.backtracks << " backtracks, " << with.cuts
+            << " cuts), Off " << iterationsPerStep(without) << " iterations/step ("
+            << without.backtracks << " backtracks, " << without.cuts << " cuts)\n";
   EXPECT_EQ(with.cuts, 0);
+  EXPECT_EQ(with.backtracks, 0);
   EXPECT_LT(iterationsPerStep(with), 6.0);
-  try {
-    const solve::DynamicReport without = run(rope, Update::Off, 60);
-    ADD_FAILURE() << "Off converged: " << iterationsPerStep(without) << " iterations/step, "
-                  << without.cuts << " cuts";
-  } catch (const solve::ConvergenceError& e) {
-    std::cout << "buoyant rope, Off: " << e.what() << '\n';
-  }
+  EXPECT_GT(without.backtracks, 0);
+  EXPECT_GT(iterationsPerStep(without), 2.5 * iterationsPerStep(with));
 }
 
 // The cost of the two update policies on a longer line (20 elements, 200 steps): printed only.

@@ -1,0 +1,47 @@
+#pragma once
+// LU with partial pivoting of a sparse matrix whose nonzeros lie in a narrow band about the
+// diagonal, by LAPACK's band solver (dgbtrf / dgbtrs). A mooring line numbered from anchor to
+// fairlead is such a matrix: an L3 line couples each node with the two on either side, so its
+// half-bandwidth is 8 whatever its length, and n (kl + ku) flops factorise it. A general sparse
+// LU spends more on its pivot search and memory than on that arithmetic (docs/performance.md).
+#include <vector>
+
+#include "libstruct/model/assembler.hpp"
+
+namespace flexmoor::solve {
+
+// The half-bandwidths of a square sparse pattern: kl below the diagonal, ku above.
+struct Band {
+  int lower = 0, upper = 0;
+};
+Band bandOf(const model::SparseMatrix& A);
+
+// Whether a band factorisation of A is cheaper than a general sparse one: its flops,
+// 2 n kl (kl + ku + 1), within a small multiple of the nonzeros (a chain-like structure, whose
+// band holds little more than its fill) or too few to matter.
+bool bandIsNarrow(const model::SparseMatrix& A, const Band& band);
+
+class BandedLu {
+ public:
+  // Sets up the band storage for A's pattern (once per pattern).
+  void analyzePattern(const model::SparseMatrix& A);
+  // Whether A has the dimensions and number of nonzeros of the pattern analysed.
+  bool fits(const model::SparseMatrix& A) const {
+    return A.rows() == n_ && A.cols() == n_ &&
+           A.nonZeros() == static_cast<Eigen::Index>(slot_.size());
+  }
+  // Numeric factorisation of A, on the pattern analyzePattern saw. Returns false when A is
+  // singular: a pivot exactly zero (as UMFPACK tells; a nearly singular matrix, the tangent at a
+  // limit point that arc length passes, still factorises).
+  bool factorize(const model::SparseMatrix& A);
+  // x = A^-1 b.
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+
+ private:
+  int n_ = 0, kl_ = 0, ku_ = 0, ldab_ = 1;
+  std::vector<int> slot_;   // per nonzero of A (in A's storage order), its place in ab_
+  std::vector<double> ab_;  // LAPACK band storage, (2 kl + ku + 1) x n, column-major
+  std::vector<int> pivots_;
+};
+
+}  // namespace flexmoor::solve
