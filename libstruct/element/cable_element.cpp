@@ -147,7 +147,7 @@ void CableElement<N>::bodyLoad(const ElementContext& c, const Vector3d& g,
 }
 
 template <int N>
-void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& load,
+bool CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& load,
                                Eigen::VectorXd& p, LoadMatrices* J) const {
   using L = shape::Lagrange1D<N>;
   Coordinates X, Y;
@@ -160,6 +160,7 @@ void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
   p.setZero(3 * N);
   if (J) J->setZero(3 * N);
   const bool per_current_length = load.measure() == model::LengthMeasure::Current;
+  bool acts = false;  // a point with a force or a derivative
   for (int q = 0; q < rule_.size(); ++q) {
     const double xi = rule_.points[q];
     const typename L::Vector Lv = L::values(xi);
@@ -171,6 +172,10 @@ void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
     point.tangent = y1 / y1_norm;
     point.stretch = y1_norm / x1_norm;
     const model::PointForce f = load.evaluate(point, J != nullptr);
+    if (f.force.isZero(0.0) && (!J || (f.d_position.isZero(0.0) && f.d_tangent.isZero(0.0) &&
+                                       f.d_velocity.isZero(0.0) && f.d_acceleration.isZero(0.0))))
+      continue;  // nothing at this point
+    acts = true;
     // Eq. E.1, E.12: the load per length times the length element, |y,1| dxi on the deformed
     // line (the dissertation) or |x,1| dxi on the unstretched one (MoorDyn).
     const double ds = (per_current_length ? y1_norm : x1_norm) * rule_.weights[q];
@@ -199,6 +204,7 @@ void CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
           out->template block<3, 3>(3 * I, 3 * K) -= (Lv(I) * Lv(K)) * weighted;
     }
   }
+  return acts;
 }
 
 template <int N>

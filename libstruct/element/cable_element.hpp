@@ -34,7 +34,7 @@ class CableElement final : public Element {
   void bodyLoad(const ElementContext& c, const Eigen::Vector3d& g,
                 Eigen::VectorXd& p) const override;
   bool takesLineLoads() const override { return true; }
-  void lineLoad(const ElementContext& c, const model::LineLoad& load, Eigen::VectorXd& p,
+  bool lineLoad(const ElementContext& c, const model::LineLoad& load, Eigen::VectorXd& p,
                 LoadMatrices* J) const override;
   bool hasDamping() const override;
   void dampingForce(const ElementContext& c, Eigen::VectorXd& f, LoadMatrices* J) const override;

@@ -71,12 +71,15 @@ class Element {
   // Nodal loads p = int N^T f ds of a line load f evaluated at the integration points on the
   // current configuration; when J is given, also its matrices (-dp/du, -dp/du', -dp/du'') from
   // int N^T (df/dq) N ds and the derivative of ds. Elements that are not lines add nothing.
+  // Returns false when the load is zero at every integration point (a seabed under a hanging
+  // part): p and J are zero, and the assembler has nothing to add.
   // Whether lineLoad can be non-zero (line elements): the assembler skips the others.
   virtual bool takesLineLoads() const { return false; }
-  virtual void lineLoad(const ElementContext&, const model::LineLoad&, Eigen::VectorXd& p,
+  virtual bool lineLoad(const ElementContext&, const model::LineLoad&, Eigen::VectorXd& p,
                         LoadMatrices* J) const {
     p.setZero(dofCount());
     if (J) J->setZero(dofCount());
+    return false;
   }
   // A pressure field on the deformed surface (Eq. 3.30-3.37 with p = p(y, t)), acting along the
   // current normal: the PointPressure at each integration point on the current configuration.

@@ -129,8 +129,9 @@ void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load,
   if (model_.element(e).takesLineLoads())
     for (const auto& line : model_.lineLoads()) {
       const bool jacobians = J && line->stiff();
-      model_.element(e).lineLoad(context(state, e), *line, p,
-                                 jacobians ? &element_jacobians_ : nullptr);
+      if (!model_.element(e).lineLoad(context(state, e), *line, p,
+                                      jacobians ? &element_jacobians_ : nullptr))
+        continue;  // zero on this element
       load += p;
       if (!jacobians) continue;
       scatterMatrix(slot_[e], element_jacobians_.stiffness, J->stiffness, lambda);
