@@ -61,9 +61,8 @@ bool joinSegments(CaseBuilder& b, const YAML::Node& n, const std::string& path,
     b.diag.error(n, path + ": segment " + std::to_string(count->second + 1) + " of " + name +
                         " does not start where segment " + std::to_string(count->second) +
                         " ends (got node " + std::to_string(b.c.node_ids[nodes.front()]) +
-                        ", expected start_node: at node " +
-                        std::to_string(b.c.node_ids[line.back()]) +
-                        ", the end of the segment before)");
+                        ", expected node " + std::to_string(b.c.node_ids[line.back()]) +
+                        ", where it ends: start_node: PREVIOUS.end)");
     return false;
   }
   ++count->second;
