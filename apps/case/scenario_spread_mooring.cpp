@@ -16,11 +16,24 @@
 //             damping: {BA: N*s} (axial Kelvin-Voigt, MoorDyn's BA; or {zeta: ...})}
 //   mooring_lines:
 //     - {anchor: [x, y, z], fairlead: [x, y, z], length, type: chain, elements: 20, order: 3}
+//     - {anchor: [x, y, z], fairlead: [x, y, z],            # segments from the anchor up
+//        segments: [{type: chain, length: 100 m, elements: 6}, {type: wire, length: 600 m,
+//                   elements: 10}, {type: chain, length: 135 m, elements: 4, order: 4}],
+//        attachments: [{at: 1, mass: 5000 kg, volume: 2 m^3, drag_area: 1 m^2, Ca: 0.5}]}
 //   platform: {reference: [x, y, z], surge: {amplitude, period, phase}, sway, heave, roll,
-//              pitch, yaw}  # optional: the fairleads carried by it (scenario_platform.hpp)
+//              pitch, yaw}  # optional: the fairleads carried by it (scenario_platform.hpp);
+//                           # each motion a sine, {table: [[t, value], ...]} or
+//                           # {file: motion.csv, column: surge} (read_motion.hpp)
 //   statics: {...}           # keys of the static step (default: one increment)
 //   dynamic: {...}           # optional: a dynamic step after it
 //   steps:, summary:, figure:, histories:   # the case's own, instead of the scenario's
+//
+// A line of segments (scenario_mooring_lines.hpp) is the segments line_k_segment_1, ... of line
+// line_k (`segment_of: line_k`, each starting at the end of the one before), starting on the
+// multi-segment catenary of the whole line; each attachment at connection k (between segments k
+// and k + 1, at line_k_segment_k.end) is a point_mass element of its mass (elements:, numbered
+// before the lines' cables) and a point body of its volume (bodies: type point, with its
+// drag_area and Ca): a net upward force (rho V - m) g, with the body's Morison loads in motion.
 //
 // Line k (1-based) is `line_k` (line_1, line_2, ...): its anchor line_k.start, its fairlead
 // line_k.end. The default
