@@ -113,7 +113,12 @@ void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   std::string segment_of;
   if (const YAML::Node* n = f.find("segment_of")) {
     segment_of = b.in.text(*n, f.path("segment_of")).value_or("");
-    if (!segment_of.empty() && !joinSegments(b, *n, f.path("segment_of"), segment_of, nodes)) {
+    if (!segment_of.empty() && segment_of == name) {
+      b.diag.error(*n, f.path("segment_of") + ": the segment's own name (got '" + name +
+                           "', expected the name of the whole line, another than its segments')");
+      segment_of.clear();
+    } else if (!segment_of.empty() &&
+               !joinSegments(b, *n, f.path("segment_of"), segment_of, nodes)) {
       b.broken_node_names.insert(segment_of);
       segment_of.clear();
     }

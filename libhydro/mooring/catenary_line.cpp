@@ -259,11 +259,15 @@ Eigen::Vector2d nestedBisection(const Line& l, int& steps) {
 }
 
 // Peyrot and Goulois' start (MAP++'s): lambda from the length over the chord, the line's mean
-// submerged weight (of its segments alone should its buoys outweigh it).
+// submerged weight (without its buoys, should they outweigh it).
 Eigen::Vector2d initialGuess(const Line& l) {
   const double x = l.in.horizontal_span, z = l.in.vertical_span, L = l.length();
   double weight = l.netWeight() / L;
-  if (!(weight > 0.0)) weight = (l.forceScale() - (l.forceScale() - l.netWeight()) / 2.0) / L;
+  if (!(weight > 0.0)) {  // without the buoys' uplift
+    weight = l.netWeight();
+    for (const double f : l.forces) weight += std::max(f, 0.0);
+    weight /= L;
+  }
   const double lambda =
       L * L <= x * x + z * z ? 0.2 : std::sqrt(3.0 * ((L * L - z * z) / (x * x) - 1.0));
   return {std::max(std::abs(weight * x / (2.0 * lambda)), 1e-6 * weight * L),

@@ -3,7 +3,8 @@
 // multi-segment elastic catenary (checked against the integrated catenary equations in
 // tests/hydro/multi_segment_catenary_test.cpp), its start on that catenary, the weight balance of
 // length_on_seabed across segments of different weights, and two lines that must be the same: a
-// one-type line split into segments, and a line with an attachment of zero net force.
+// one-type line split into segments, and a line with an attachment of zero net force; and
+// cases/ocean/chain-wire-chain-motion.yaml, the lines carried by a platform moved by a file.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -135,6 +136,38 @@ TEST(MultiSegmentMooring, SplitLineAndZeroNetBodyChangeNothing) {
     const double ref = summaryValue(whole, key);
     EXPECT_NEAR(summaryValue(split, key) / ref, 1.0, 1e-8) << key;
     EXPECT_NEAR(summaryValue(body, key) / ref, 1.0, 1e-8) << key;
+  }
+}
+
+// cases/ocean/chain-wire-chain-motion.yaml: the platform's surge, heave and pitch from a CSV file
+// sampled every h = 0.5 s from 2 sin(2 pi t / 10 s) m, 0.5 sin(2 pi t / 14 s + 0.4) m and 1.5
+// sin(2 pi t / 25 s) degrees. Line 1's fairlead (rest (40, 0, -15) m, the reference at the
+// origin) at 12.3 s is where that motion puts it, translation + Ry(pitch) arm, to the spline's
+// bound inside a table (cubic_spline_function.hpp; h^4 w^4 A / 300 summed over surge and heave:
+// 7e-5 m; measured 4.7e-5 m in x, 1.4e-6 m in z), its velocity surge' + pitch' (-40 sin - 15 cos)
+// to h^3 w^4 A / 100 (4.2e-4 m/s; measured 1.6e-4 m/s). Lines 2 and 3 mirror each other across y
+// = 0 under surge, heave and pitch: equal extremes (1e-9 relative; measured equal), and every
+// line's tension range over t >= 10 s holds its statics tension (345,874 N, SG7).
+TEST(MultiSegmentMooring, MotionFromAFileMovesTheFairleads) {
+  const std::string json = runNamedCase("chain-wire-chain-motion");
+  const double t = 12.3, w = 2.0 * kPi;
+  const double surge = 2.0 * std::sin(w * t / 10.0),
+               surge_rate = 2.0 * w / 10.0 * std::cos(w * t / 10.0);
+  const double heave = 0.5 * std::sin(w * t / 14.0 + 0.4);
+  const double pitch = 1.5 * kPi / 180.0 * std::sin(w * t / 25.0);
+  const double pitch_rate = 1.5 * kPi / 180.0 * w / 25.0 * std::cos(w * t / 25.0);
+  const double c = std::cos(pitch), s = std::sin(pitch);
+  EXPECT_NEAR(summaryValue(json, "fairlead_x_1"), surge + 40.0 * c - 15.0 * s, 7e-5);
+  EXPECT_NEAR(summaryValue(json, "fairlead_z_1"), heave - 40.0 * s - 15.0 * c, 7e-5);
+  EXPECT_NEAR(summaryValue(json, "fairlead_vx_1"), surge_rate + pitch_rate * (-40.0 * s - 15.0 * c),
+              4.2e-4);
+  for (const char* stat : {"tension_min_", "tension_max_"})
+    EXPECT_NEAR(
+        summaryValue(json, std::string(stat) + "3") / summaryValue(json, std::string(stat) + "2"),
+        1.0, 1e-9);
+  for (int k = 1; k <= 3; ++k) {
+    EXPECT_LT(summaryValue(json, "tension_min_" + std::to_string(k)), 345874.0) << "line " << k;
+    EXPECT_GT(summaryValue(json, "tension_max_" + std::to_string(k)), 345874.0) << "line " << k;
   }
 }
 
