@@ -105,13 +105,6 @@ void startOnCatenary(CaseBuilder& b, const std::vector<const InitialShapeSpec*>&
     std::reverse(in.segments.begin(), in.segments.end());
     std::reverse(in.connection_forces.begin(), in.connection_forces.end());
   }
-  if (parts.size() == 1) {  // one segment: the line's own inputs
-    in.unstretched_length = in.segments.front().length;
-    in.weight = in.segments.front().weight;
-    in.axial_stiffness = in.segments.front().axial_stiffness;
-    in.segments.clear();
-    in.connection_forces.clear();
-  }
   try {
     const hydro::CatenaryLine line = hydro::solveCatenary(in);
     const Eigen::Vector3d along = in.horizontal_span > 0.0

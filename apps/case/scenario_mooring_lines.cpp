@@ -217,13 +217,6 @@ bool checkStart(Diagnostics& diag, const YAML::Node& item, const std::string& pa
   in.connection_forces.assign(in.segments.size() - 1, 0.0);
   for (const MooringAttachment& a : line.attachments)
     in.connection_forces[a.at - 1] += (rho * a.volume - a.mass) * g;  // buoyancy less weight
-  if (in.segments.size() == 1) {  // as build_initial_shape.cpp gives a line of one segment
-    in.unstretched_length = in.segments.front().length;
-    in.weight = in.segments.front().weight;
-    in.axial_stiffness = in.segments.front().axial_stiffness;
-    in.segments.clear();
-    in.connection_forces.clear();
-  }
   try {
     hydro::solveCatenary(in);
     return true;

@@ -308,14 +308,14 @@ void checkPositive(double v, const std::string& what) {
 
 void check(const Line& l) {
   const CatenaryLineInputs& in = l.in;
-  const bool several = !in.segments.empty();
+  const bool several = in.segments.size() > 1;
   for (size_t i = 0; i < l.segments.size(); ++i) {
     const std::string of = several ? " of segment " + std::to_string(i + 1) : "";
     checkPositive(l.segments[i].length, "the unstretched length" + of);
     checkPositive(l.segments[i].weight, "the submerged weight per length" + of);
     checkPositive(l.segments[i].axial_stiffness, "the axial stiffness EA" + of);
   }
-  if (several && in.connection_forces.size() + 1 != in.segments.size())
+  if (!in.segments.empty() && in.connection_forces.size() + 1 != in.segments.size())
     throw CatenaryError("catenary: " + std::to_string(in.connection_forces.size()) +
                         " connection forces for " + std::to_string(in.segments.size()) +
                         " segments (expected one for each connection point, " +

@@ -49,8 +49,9 @@ struct CatenaryLineInputs {
   double unstretched_length = 0.0;  // L > 0          } a line of one segment (ignored when
   double weight = 0.0;              // w > 0          } segments is given)
   double axial_stiffness = 0.0;     // EA > 0         }
-  // A line of several segments, the anchor's first, and the point force at each connection
-  // point c (between segments c and c + 1, 0-based here; segments.size() - 1 of them, + up).
+  // A line of segments (one or several), the anchor's first, and the point force at each
+  // connection point c (between segments c and c + 1, 0-based here; segments.size() - 1 of
+  // them, + up). One segment given here is the line of those three.
   std::vector<CatenarySegment> segments;
   std::vector<double> connection_forces;
   bool seabed = true;     // the anchor lies on a flat bed that carries the line
