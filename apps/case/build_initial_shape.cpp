@@ -7,13 +7,18 @@
 // rho_w pi d^2 / 4) per unstretched length (the buoyancy where its section has hydro: in water),
 // EA from the material's initial modulus, seabed contact when the case has `seabed:` and the
 // anchor lies on the bed (the bed's height under the anchor taken as flat). A node at reference
-// arc length s from the anchor goes to the catenary's point at s.
+// arc length s from the anchor goes to the catenary's point at s. The segments of a multi-segment
+// line (segment_of:) start on the line's one catenary, each segment with its own section's weight
+// and EA, and at each connection node the net upward force of what is attached there: the
+// buoyancy rho_w g V of its bodies (taken fully submerged) less the weight of its point masses.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "apps/case/case_builder.hpp"
 #include "libhydro/mooring/catenary_line.hpp"
+#include "libstruct/element/spring_element.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -27,9 +32,26 @@ Eigen::Vector3d startPosition(const model::Model& m, int node) {
   return p;
 }
 
-void startOnCatenary(CaseBuilder& b, const InitialShapeSpec& spec) {
+// The net upward point force at a node: the buoyancy rho_w g V of the bodies there (taken fully
+// submerged) less the weight of the point masses there.
+double pointForce(const CaseBuilder& b, int node) {
+  const double g = b.model.gravity().norm();
+  double force = 0.0;
+  if (b.hydro.has_water)
+    for (const BodySpec& body : b.hydro.bodies)
+      if (body.node == node) force += b.hydro.water.density * g * body.body.volume;
+  for (int e = 0; e < b.model.elementCount(); ++e)
+    if (b.element_types[e] == "point_mass" && b.model.element(e).nodes().front() == node)
+      force -= g * static_cast<const element::PointMassElement&>(b.model.element(e)).weighingMass();
+  return force;
+}
+
+// One line, or the segments of a multi-segment line (`parts`, start to end, each sharing its
+// first node with the one before), on its catenary.
+void startOnCatenary(CaseBuilder& b, const std::vector<const InitialShapeSpec*>& parts) {
   const model::Model& m = b.model;
   const HydroSpec& h = b.hydro;
+  const InitialShapeSpec& spec = *parts.front();
   const auto fail = [&](const std::string& what) {
     b.diag.error(spec.line, spec.where + ": " + what);
   };
@@ -39,11 +61,9 @@ void startOnCatenary(CaseBuilder& b, const InitialShapeSpec& spec) {
          (g.norm() > 0.0 ? " not along -z" : "") + ", expected loads: gravity: {g: ...})");
     return;
   }
-  const element::CableSection& section = spec.section->section;
-  const int first = spec.nodes.front(), last = spec.nodes.back();
+  const int first = spec.nodes.front(), last = parts.back()->nodes.back();
   const bool start_is_anchor = startPosition(m, first).z() <= startPosition(m, last).z();
-  const int anchor_node = start_is_anchor ? first : last;
-  const Eigen::Vector3d anchor = startPosition(m, anchor_node);
+  const Eigen::Vector3d anchor = startPosition(m, start_is_anchor ? first : last);
   const Eigen::Vector3d fairlead = startPosition(m, start_is_anchor ? last : first);
   const double tolerance = positionTolerance(b);
   bool on_bed = false;
@@ -66,26 +86,73 @@ void startOnCatenary(CaseBuilder& b, const InitialShapeSpec& spec) {
   hydro::CatenaryLineInputs in;
   in.horizontal_span = span.head<2>().norm();
   in.vertical_span = span.z();
-  in.unstretched_length = (m.reference().col(last) - m.reference().col(first)).norm();
-  in.weight = submergedWeightPerLength(b, *spec.section);
-  in.axial_stiffness = section.material->initialModulus() * section.area;
   in.seabed = on_bed;
   in.friction = spec.friction;
   in.max_strain = spec.max_strain;
+  // Each part's segment, from the start; the arc length where each part starts.
+  std::vector<double> offsets = {0.0};
+  for (const InitialShapeSpec* part : parts) {
+    const element::CableSection& section = part->section->section;
+    const double length =
+        (m.reference().col(part->nodes.back()) - m.reference().col(part->nodes.front())).norm();
+    in.segments.push_back({length, submergedWeightPerLength(b, *part->section),
+                           section.material->initialModulus() * section.area});
+    if (offsets.size() > 1) in.connection_forces.push_back(pointForce(b, part->nodes.front()));
+    offsets.push_back(offsets.back() + length);
+  }
+  const double total = offsets.back();
+  if (!start_is_anchor) {
+    std::reverse(in.segments.begin(), in.segments.end());
+    std::reverse(in.connection_forces.begin(), in.connection_forces.end());
+  }
   try {
     const hydro::CatenaryLine line = hydro::solveCatenary(in);
     const Eigen::Vector3d along = in.horizontal_span > 0.0
                                       ? Eigen::Vector3d(span.x(), span.y(), 0.0).normalized()
                                       : Eigen::Vector3d::UnitX();
-    for (const int node : spec.nodes) {
-      const double s = (m.reference().col(node) - m.reference().col(anchor_node)).norm();
-      const hydro::CatenaryPoint p = line.at(s);
-      const Eigen::Vector3d position = anchor + p.x * along + p.z * Eigen::Vector3d::UnitZ();
-      b.model.setStartDisplacement(node, position - m.reference().col(node));
-    }
+    for (size_t k = 0; k < parts.size(); ++k)
+      for (const int node : parts[k]->nodes) {
+        const double along_line =
+            offsets[k] +
+            (m.reference().col(node) - m.reference().col(parts[k]->nodes.front())).norm();
+        const hydro::CatenaryPoint p = line.at(start_is_anchor ? along_line : total - along_line);
+        const Eigen::Vector3d position = anchor + p.x * along + p.z * Eigen::Vector3d::UnitZ();
+        b.model.setStartDisplacement(node, position - m.reference().col(node));
+      }
   } catch (const hydro::CatenaryError& e) {
     fail(e.what());
   }
+}
+
+// The lines to start: each line with an initial_shape alone, the segments of a multi-segment line
+// together (in file order), refusing one whose segments do not all give it.
+std::vector<std::vector<const InitialShapeSpec*>> startLines(CaseBuilder& b) {
+  std::vector<std::vector<const InitialShapeSpec*>> lines;
+  std::map<std::string, size_t> of_name;
+  for (const InitialShapeSpec& spec : b.initial_shapes) {
+    if (spec.segment_of.empty()) {
+      lines.push_back({&spec});
+      continue;
+    }
+    const auto [it, added] = of_name.emplace(spec.segment_of, lines.size());
+    if (added) lines.emplace_back();
+    lines[it->second].push_back(&spec);
+  }
+  std::vector<std::vector<const InitialShapeSpec*>> complete;
+  for (auto& parts : lines) {
+    const std::string& name = parts.front()->segment_of;
+    const int segments = name.empty() ? 1 : b.line_segments.at(name);
+    if (static_cast<int>(parts.size()) == segments) {
+      complete.push_back(std::move(parts));
+      continue;
+    }
+    b.diag.error(parts.front()->line,
+                 parts.front()->where + ": " + std::to_string(parts.size()) + " of the " +
+                     std::to_string(segments) + " segments of " + name +
+                     " give initial_shape (expected all or none: the segments start on one "
+                     "catenary, the whole line's)");
+  }
+  return complete;
 }
 
 }  // namespace
@@ -101,19 +168,22 @@ double submergedWeightPerLength(const CaseBuilder& b, const SectionSpec& section
 
 void buildInitialShapes(CaseBuilder& b) {
   std::set<int> started;  // nodes of the lines started so far
-  for (const InitialShapeSpec& spec : b.initial_shapes) {
-    const auto shared = std::find_if(spec.nodes.begin(), spec.nodes.end(),
-                                     [&](int n) { return started.count(n) > 0; });
-    if (shared != spec.nodes.end()) {
-      b.diag.error(spec.line, spec.where + ": the line shares node " +
-                                  std::to_string(b.c.node_ids[*shared]) +
-                                  " with another line's catenary start (got two starts for it, "
-                                  "expected lines of their own nodes: multi-segment lines are "
-                                  "not started on a catenary)");
+  for (const auto& parts : startLines(b)) {
+    std::set<int> nodes;
+    for (const InitialShapeSpec* part : parts) nodes.insert(part->nodes.begin(), part->nodes.end());
+    const auto shared =
+        std::find_if(nodes.begin(), nodes.end(), [&](int n) { return started.count(n) > 0; });
+    if (shared != nodes.end()) {
+      b.diag.error(parts.front()->line,
+                   parts.front()->where + ": the line shares node " +
+                       std::to_string(b.c.node_ids[*shared]) +
+                       " with another line's catenary start (got two starts for it, expected "
+                       "lines of their own nodes, or the segments of one line given "
+                       "segment_of:)");
       continue;
     }
-    started.insert(spec.nodes.begin(), spec.nodes.end());
-    startOnCatenary(b, spec);
+    started.insert(nodes.begin(), nodes.end());
+    startOnCatenary(b, parts);
   }
   if (!b.initial_shapes.empty()) b.model.setStartLoadFactor(1.0);
 }

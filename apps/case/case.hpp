@@ -87,9 +87,11 @@ struct SummarySpec {
   int component = 0;               // 0, 1, 2 = x, y, z
   int mode = 0;                    // Frequency: 1-based mode number
   std::vector<int> elements;       // LengthOnSeabed: the line's elements
-  double weight_per_length = 0.0;  // LengthOnSeabed: its submerged weight per unstretched length
-  double scale = 1.0;              // e.g. -1 to report a sag as positive
-  int step = -1;                   // 0-based step index; -1 = the last step
+  double weight_per_length = 0.0;  // LengthOnSeabed: the submerged weight per unstretched length
+                                   // of its element at the anchor
+  std::vector<double> element_weights;  // LengthOnSeabed: that of each of its elements
+  double scale = 1.0;                   // e.g. -1 to report a sag as positive
+  int step = -1;                        // 0-based step index; -1 = the last step
   Reduction reduction = Reduction::StepEnd;
   double at = 0.0;  // AtTime: the time, in the run's time (every dynamic step advances it)
   double from = -std::numeric_limits<double>::infinity();  // the window of a statistic; the

@@ -62,8 +62,9 @@ struct PendingCable {
   std::vector<int> nodes;
   std::string section;
   int line = 0;
-  std::string where;  // "lines[2]"
-  std::string name;   // the line's name, "" for none
+  std::string where;       // "lines[2]"
+  std::string name;        // the line's name, "" for none
+  std::string segment_of;  // the multi-segment line it is a segment of, "" for none
 };
 
 // A line's `initial_shape: catenary` (read_initial_shape.cpp): its nodes start on the elastic
@@ -74,7 +75,8 @@ struct InitialShapeSpec {
   double friction = 0.0;    // C_B on the laid part (the static FE has no friction: default 0)
   double max_strain = 0.1;  // hydro::CatenaryLineInputs::max_strain
   int line = 0;
-  std::string where;  // "lines[2].initial_shape"
+  std::string where;       // "lines[2].initial_shape"
+  std::string segment_of;  // the multi-segment line whose segment it is (read_mesh.cpp), or ""
 };
 
 // One item of `loads: enclosed_fluid:` as read (read_enclosed_fluid.cpp): the liquid in the
@@ -106,6 +108,7 @@ struct CaseBuilder {
   std::set<std::string> broken_node_names;  // lines and node sets defined with errors
   std::vector<PendingCable> line_cables;
   std::map<std::string, std::vector<int>> line_elements;  // the elements of each named line
+  std::map<std::string, int> line_segments;  // the segment count of each multi-segment line
   // Membrane law of each material (null: broken, or linear_elastic without nu).
   std::map<std::string, std::shared_ptr<const material::MembraneMaterial>> membrane_materials;
   std::vector<PendingSurface> surface_elements;
@@ -179,7 +182,8 @@ void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp
 void checkModel(CaseBuilder& b);
 // A line's `initial_shape:` (read_initial_shape.cpp), kept in b.initial_shapes.
 void readInitialShape(CaseBuilder& b, const YAML::Node& n, const std::string& path,
-                      const std::vector<int>& nodes, const SectionSpec* section);
+                      const std::vector<int>& nodes, const SectionSpec* section,
+                      const std::string& segment_of);
 // The weight per unstretched length of a line of this section in the case's gravity, less its
 // buoyancy rho_w g pi d^2 / 4 where the section has hydro: in water (build_initial_shape.cpp).
 double submergedWeightPerLength(const CaseBuilder& b, const SectionSpec& section);

@@ -7,12 +7,14 @@
 //          surge: {amplitude: 2 m, period: 10 s, phase: 0}, sway, heave,  (lengths)
 //          roll: {amplitude: 5 deg, period: 20 s}, pitch, yaw}           (angles)
 //     the displacement component (a length) of a point of a rigid body at `arm` from the body's
-//     reference point, the body moving by the six sines about it (rigid_point_motion.hpp; each
-//     motion optional); a support moves it with `displacement: [1]` in the case's length unit.
+//     reference point, the body moving by its six motions about it (rigid_point_motion.hpp; each
+//     optional, each a sine, a table {table: [[t, value], ...]} or a file {file, column}:
+//     read_motion.hpp); a support moves it with `displacement: [1]` in the case's length unit.
 #include <algorithm>
 #include <cmath>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/read_motion.hpp"
 #include "libstruct/model/rigid_point_motion.hpp"
 
 namespace flexmoor::app {
@@ -52,20 +54,6 @@ std::shared_ptr<const model::TimeFunction> readTable(CaseBuilder& b, Fields& f) 
   return std::make_shared<model::TableFunction>(times, values);
 }
 
-// A sine's amplitude (of the kind given), period, phase and offset (0 unless given).
-std::shared_ptr<const model::TimeFunction> readSine(CaseBuilder& b, Fields& f,
-                                                    const QuantityKind& amplitude_kind) {
-  const YAML::Node* a = f.require("amplitude");
-  const YAML::Node* p = f.require("period");
-  const auto amplitude = a ? b.in.quantity(*a, f.path("amplitude"), amplitude_kind) : std::nullopt;
-  const auto period =
-      p ? b.in.quantity(*p, f.path("period"), kind::kTime, Limit::Positive) : std::nullopt;
-  const double phase = b.in.quantityOr(f, "phase", kind::kNumber, Limit::Any, 0.0);
-  const double offset = b.in.quantityOr(f, "offset", kind::kNumber, Limit::Any, 0.0);
-  if (!amplitude || !period) return nullptr;
-  return std::make_shared<model::SineFunction>(offset, *amplitude, *period, phase);
-}
-
 const char* const kRigidMotions[] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
 
 std::shared_ptr<const model::TimeFunction> readRigidPoint(CaseBuilder& b, Fields& f) {
@@ -80,8 +68,8 @@ std::shared_ptr<const model::TimeFunction> readRigidPoint(CaseBuilder& b, Fields
   for (int dof = 0; dof < 6; ++dof) {
     const YAML::Node* m = f.find(kRigidMotions[dof]);
     if (!m) continue;
-    Fields sine(b.diag, *m, f.path(kRigidMotions[dof]), {"amplitude", "period", "phase"});
-    motions[dof] = readSine(b, sine, dof < 3 ? kind::kLength : kind::kNumber);
+    motions[dof] = readMotion(b.in, *m, f.path(kRigidMotions[dof]),
+                              dof < 3 ? kind::kLength : kind::kNumber, b.diag.file());
     ok = ok && motions[dof];
   }
   if (!ok) return nullptr;
@@ -102,7 +90,7 @@ std::shared_ptr<const model::TimeFunction> readHistory(CaseBuilder& b, const Map
                : std::vector<std::string>{"type"});
   const YAML::Node* t = f.require("type");
   if (!t) return nullptr;
-  if (type == "sine") return readSine(b, f, kind::kNumber);
+  if (type == "sine") return readSine(b.in, f, kind::kNumber);
   if (type == "ramp") {
     const double start = b.in.quantityOr(f, "start", kind::kTime, Limit::NonNegative, 0.0);
     const YAML::Node* d = f.require("duration");

@@ -4,13 +4,17 @@
 // friction: the seabed friction coefficient C_B of the catenary's laid part (default 0: the FE
 // model's seabed friction acts on sliding only, so a static equilibrium has none); max_strain:
 // the largest mean strain a taut line may need before it is taken as too short for its span.
+// The segments of a multi-segment line (`segment_of:`, read_mesh.cpp) start on one catenary, the
+// line's: each gives initial_shape (the first segment's friction and max_strain count) or none.
 #include "apps/case/case_builder.hpp"
 
 namespace flexmoor::app {
 
 void readInitialShape(CaseBuilder& b, const YAML::Node& n, const std::string& path,
-                      const std::vector<int>& nodes, const SectionSpec* section) {
+                      const std::vector<int>& nodes, const SectionSpec* section,
+                      const std::string& segment_of) {
   InitialShapeSpec spec;
+  spec.segment_of = segment_of;
   spec.nodes = nodes;
   spec.section = section;
   spec.line = lineOf(n);

@@ -1,6 +1,12 @@
 // nodes:, lines: and elements: of a case file. Model nodes are the explicit nodes in ascending id,
 // then the nodes each line generates, then those of each surface; model elements are the explicit
 // elements in file order, then the cable elements of each line, then each surface's elements.
+//
+// A line with `segment_of: NAME` is a segment of the multi-segment line NAME (chain - wire -
+// chain, each segment its own section and mesh): NAME's segments in file order, each after the
+// first starting at the end node of the one before (start_node: PREVIOUS.end). NAME is then a line
+// too: its nodes from its first segment's start to its last's end (NAME.start, NAME.end), its
+// elements theirs; with initial_shape, the segments start on the one catenary of the whole line.
 #include <algorithm>
 #include <numeric>
 
@@ -38,10 +44,36 @@ std::optional<LineEnd> readLineEnd(CaseBuilder& b, Fields& f, const char* point,
   return LineEnd{b.model.reference().col(*attached), *attached};
 }
 
+// Joins a line to the multi-segment line `segment_of` names: a new name for its first segment,
+// else its nodes must start where the last segment ends. False when wrong (reported).
+bool joinSegments(CaseBuilder& b, const YAML::Node& n, const std::string& path,
+                  const std::string& name, const std::vector<int>& nodes) {
+  const auto count = b.line_segments.find(name);
+  if (count == b.line_segments.end() && b.broken_node_names.count(name)) return false;
+  if (count == b.line_segments.end()) {
+    if (!checkName(b, n, path, name)) return false;
+    b.line_segments[name] = 1;
+    b.c.lines[name] = nodes;
+    return true;
+  }
+  std::vector<int>& line = b.c.lines.at(name);
+  if (nodes.front() != line.back()) {
+    b.diag.error(n, path + ": segment " + std::to_string(count->second + 1) + " of " + name +
+                        " does not start where segment " + std::to_string(count->second) +
+                        " ends (got node " + std::to_string(b.c.node_ids[nodes.front()]) +
+                        ", expected node " + std::to_string(b.c.node_ids[line.back()]) +
+                        ", where it ends: start_node: PREVIOUS.end)");
+    return false;
+  }
+  ++count->second;
+  line.insert(line.end(), nodes.begin() + 1, nodes.end());
+  return true;
+}
+
 void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   Fields f(b.diag, item, path,
            {"name", "from", "to", "start_node", "end_node", "elements", "order", "section",
-            "initial_shape"});
+            "initial_shape", "segment_of"});
   std::string name;
   if (const YAML::Node* n = f.find("name")) {
     name = b.in.text(*n, f.path("name")).value_or("");
@@ -78,14 +110,27 @@ void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
     else
       nodes[k] = b.addGeneratedNode((1.0 - s) * start->position + s * end->position, lineOf(item));
   }
+  std::string segment_of;
+  if (const YAML::Node* n = f.find("segment_of")) {
+    segment_of = b.in.text(*n, f.path("segment_of")).value_or("");
+    if (!segment_of.empty() && segment_of == name) {
+      b.diag.error(*n, f.path("segment_of") + ": the segment's own name (got '" + name +
+                           "', expected the name of the whole line, another than its segments')");
+      segment_of.clear();
+    } else if (!segment_of.empty() &&
+               !joinSegments(b, *n, f.path("segment_of"), segment_of, nodes)) {
+      b.broken_node_names.insert(segment_of);
+      segment_of.clear();
+    }
+  }
   if (section)
     for (int e = 0; e < elements; ++e) {
       const auto first = nodes.begin() + e * (order - 1);
-      b.line_cables.push_back(
-          {std::vector<int>(first, first + order), ns->Scalar(), lineOf(item), path, name});
+      b.line_cables.push_back({std::vector<int>(first, first + order), ns->Scalar(), lineOf(item),
+                               path, name, segment_of});
     }
   if (const YAML::Node* shape = f.find("initial_shape"))
-    readInitialShape(b, *shape, f.path("initial_shape"), nodes, section);
+    readInitialShape(b, *shape, f.path("initial_shape"), nodes, section, segment_of);
   if (!name.empty()) b.c.lines[name] = std::move(nodes);
 }
 
@@ -336,6 +381,7 @@ void readElements(CaseBuilder& b, const YAML::Node& n) {
     const int e =
         b.model.addElement(element::makeCableElement(std::move(p.nodes), s.section, s.quadrature));
     if (!p.name.empty()) b.line_elements[p.name].push_back(e);
+    if (!p.segment_of.empty()) b.line_elements[p.segment_of].push_back(e);
     b.element_types.push_back("cable");
     b.element_origin.push_back({p.line, p.where, p.section});
   }

@@ -335,19 +335,19 @@ bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path
                         "seabed: with water:)");
     return false;
   }
-  const SectionSpec* section = nullptr;
+  s.elements = line->second;
   for (int e : line->second) {
     const auto it = b.sections.find(b.element_origin[e].section);
-    if (it != b.sections.end() && it->second) section = &*it->second;
-  }
-  if (!section) return false;  // broken section: reported where it is defined
-  s.elements = line->second;
-  s.weight_per_length = submergedWeightPerLength(b, *section);
-  if (!(s.weight_per_length > 0.0)) {
-    b.diag.error(n, path + ": the line does not sink (got a submerged weight of " +
-                        formatNumber(s.weight_per_length) + " per length, expected > 0: " +
-                        "length_on_seabed is the length whose weight the bed carries)");
-    return false;
+    if (it == b.sections.end() || !it->second) return false;  // broken: reported where defined
+    const double w = submergedWeightPerLength(b, *it->second);
+    if (!(w > 0.0)) {
+      b.diag.error(n, path + ": the line does not sink (got a submerged weight of " +
+                          formatNumber(w) + " per length in section " + it->first +
+                          ", expected > 0: length_on_seabed is the length whose weight the bed "
+                          "carries)");
+      return false;
+    }
+    s.element_weights.push_back(w);
   }
   const std::vector<int>& nodes = b.c.lines.at(*name);
   const model::Model& m = b.model;
@@ -356,6 +356,12 @@ bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path
   };
   const int lower = height(nodes.front()) <= height(nodes.back()) ? nodes.front() : nodes.back();
   s.node = m.isConstrained(lower, 2) ? lower : -1;
+  // The weight of the element at the anchor, for the anchor's share of the laid weight.
+  s.weight_per_length = s.element_weights.front();
+  for (size_t i = 0; i < s.elements.size(); ++i) {
+    const std::vector<int>& ends = m.element(s.elements[i]).nodes();
+    if (ends.front() == lower || ends.back() == lower) s.weight_per_length = s.element_weights[i];
+  }
   return true;
 }
 

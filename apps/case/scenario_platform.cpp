@@ -1,5 +1,6 @@
 #include "apps/case/scenario_platform.hpp"
 
+#include "apps/case/read_motion.hpp"
 #include "apps/case/scenario_yaml.hpp"
 #include "apps/case/units.hpp"
 
@@ -7,19 +8,6 @@ namespace flexmoor::app {
 namespace {
 
 const char* const kMotions[] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
-
-std::optional<PlatformSine> readSine(Input& in, const YAML::Node& n, const std::string& path,
-                                     const QuantityKind& amplitude_kind) {
-  Fields f(in.diag, n, path, {"amplitude", "period", "phase"});
-  const YAML::Node* a = f.require("amplitude");
-  const YAML::Node* p = f.require("period");
-  const auto amplitude = a ? in.quantity(*a, f.path("amplitude"), amplitude_kind) : std::nullopt;
-  const auto period =
-      p ? in.quantity(*p, f.path("period"), kind::kTime, Limit::Positive) : std::nullopt;
-  const double phase = in.quantityOr(f, "phase", kind::kNumber, Limit::Any, 0.0);
-  if (!amplitude || !period) return std::nullopt;
-  return PlatformSine{*amplitude, *period, phase};
-}
 
 }  // namespace
 
@@ -34,9 +22,10 @@ std::optional<PlatformMotion> readPlatform(Input& in, const YAML::Node& n) {
   }
   for (int dof = 0; dof < 6; ++dof)
     if (const YAML::Node* m = f.find(kMotions[dof])) {
-      p.motions[dof] =
-          readSine(in, *m, f.path(kMotions[dof]), dof < 3 ? kind::kLength : kind::kNumber);
-      ok = ok && p.motions[dof];
+      // Read here for its errors (at their lines); the history reads it again from the same node.
+      ok = ok && readMotion(in, *m, f.path(kMotions[dof]), dof < 3 ? kind::kLength : kind::kNumber,
+                            in.diag.file());
+      p.motions[dof] = *m;
     }
   if (ok && n.IsMap() && !f.find("surge") && !f.find("sway") && !f.find("heave") &&
       !f.find("roll") && !f.find("pitch") && !f.find("yaw")) {
@@ -59,13 +48,7 @@ YAML::Node platformPointHistory(const PlatformMotion& p, const Eigen::Vector3d& 
   h["component"] = std::string(1, "xyz"[component]);
   h["offset"] = scenarioNumber(point[component] - from[component]);
   for (int dof = 0; dof < 6; ++dof)
-    if (const auto& m = p.motions[dof]) {
-      YAML::Node sine;
-      sine["amplitude"] = scenarioNumber(m->amplitude);
-      sine["period"] = scenarioNumber(m->period);
-      sine["phase"] = scenarioNumber(m->phase);
-      h[kMotions[dof]] = sine;
-    }
+    if (const auto& m = p.motions[dof]) h[kMotions[dof]] = *m;
   return h;
 }
 

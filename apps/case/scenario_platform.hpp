@@ -7,9 +7,14 @@
 //     reference: [0, 0, 0 m]                                # default: the origin
 //     surge: {amplitude: 2 m, period: 10 s, phase: 0}       # sway, heave: lengths too
 //     pitch: {amplitude: 3 deg, period: 25 s, phase: 0.5}   # roll, pitch, yaw: angles
+//     heave: {table: [[0 s, 0 m], [5 s, 0.4 m], [10 s, 0 m], ...]}
+//     yaw: {file: motion.csv, column: yaw, unit: deg}      # time_column: time (default)
 //
-// each motion optional, each a sine A sin(2 pi t / T + phase); the rotation is
-// R = Rz(yaw) Ry(pitch) Rx(roll) (libstruct/model/rigid_point_motion.hpp).
+// each motion optional: a sine A sin(2 pi t / T + phase), a table of samples or a file of time
+// series (read_motion.hpp: samples become a cubic spline, the velocities and accelerations its
+// derivatives); the rotation is R = Rz(yaw) Ry(pitch) Rx(roll)
+// (libstruct/model/rigid_point_motion.hpp), so each fairlead's velocity is v + omega x (R arm)
+// of the motion it follows, exactly.
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Dense>
@@ -20,13 +25,10 @@
 
 namespace flexmoor::app {
 
-struct PlatformSine {
-  double amplitude = 0.0, period = 0.0, phase = 0.0;
-};
-
 struct PlatformMotion {
   Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-  std::array<std::optional<PlatformSine>, 6> motions;  // surge, sway, heave, roll, pitch, yaw
+  // surge, sway, heave, roll, pitch, yaw as given (checked), for the histories to read
+  std::array<std::optional<YAML::Node>, 6> motions;
 };
 
 // Reads `platform:` (errors at their lines in in.diag; nullopt when wrong).

@@ -16,11 +16,24 @@
 //             damping: {BA: N*s} (axial Kelvin-Voigt, MoorDyn's BA; or {zeta: ...})}
 //   mooring_lines:
 //     - {anchor: [x, y, z], fairlead: [x, y, z], length, type: chain, elements: 20, order: 3}
+//     - {anchor: [x, y, z], fairlead: [x, y, z],            # segments from the anchor up
+//        segments: [{type: chain, length: 100 m, elements: 6}, {type: wire, length: 600 m,
+//                   elements: 10}, {type: chain, length: 135 m, elements: 4, order: 4}],
+//        attachments: [{at: 1, mass: 5000 kg, volume: 2 m^3, drag_area: 1 m^2, Ca: 0.5}]}
 //   platform: {reference: [x, y, z], surge: {amplitude, period, phase}, sway, heave, roll,
-//              pitch, yaw}  # optional: the fairleads carried by it (scenario_platform.hpp)
+//              pitch, yaw}  # optional: the fairleads carried by it (scenario_platform.hpp);
+//                           # each motion a sine, {table: [[t, value], ...]} or
+//                           # {file: motion.csv, column: surge} (read_motion.hpp)
 //   statics: {...}           # keys of the static step (default: one increment)
 //   dynamic: {...}           # optional: a dynamic step after it
 //   steps:, summary:, figure:, histories:   # the case's own, instead of the scenario's
+//
+// A line of segments (scenario_mooring_lines.hpp) is the segments line_k_segment_1, ... of line
+// line_k (`segment_of: line_k`, each starting at the end of the one before), starting on the
+// multi-segment catenary of the whole line; each attachment at connection k (between segments k
+// and k + 1, at line_k_segment_k.end) is a point_mass element of its mass (elements:, numbered
+// before the lines' cables) and a point body of its volume (bodies: type point, with its
+// drag_area and Ca): a net upward force (rho V - m) g, with the body's Morison loads in motion.
 //
 // Line k (1-based) is `line_k` (line_1, line_2, ...): its anchor line_k.start, its fairlead
 // line_k.end. The default
@@ -41,115 +54,14 @@
 #include <optional>
 
 #include "apps/case/scenario.hpp"
+#include "apps/case/scenario_mooring_lines.hpp"
 #include "apps/case/scenario_platform.hpp"
 #include "apps/case/scenario_yaml.hpp"
 #include "apps/case/units.hpp"
 #include "apps/case/yaml_input.hpp"
-#include "libhydro/mooring/catenary_line.hpp"
 
 namespace flexmoor::app {
 namespace {
-
-const double kPi = std::acos(-1.0);
-const QuantityKind kMassPerLength{"a mass per length (like kg/m)", {1, -1, 0}};
-const QuantityKind kWeightPerLength{"a force per length (like N/m)", {1, 0, -2}};
-
-// A line type as read: what its section and the catenary start need, and its hydro keys.
-struct LineType {
-  double area = 0.0, mass_per_length = 0.0, ea = 0.0, diameter = 0.0;
-  YAML::Node node;  // its map in the file, for the keys copied with their place
-};
-
-struct MooringLine {
-  Eigen::Vector3d anchor, fairlead;
-  double length = 0.0;
-  std::string type;
-  int elements = 20, order = 3;
-};
-
-std::optional<LineType> readLineType(Input& in, const MapEntry& e, double rho, double g) {
-  Diagnostics& diag = in.diag;
-  Fields f(diag, e.value, childPath("line_types", e.key),
-           {"diameter", "mass_per_length", "EA", "weight_in_water", "compression", "strain", "Cn",
-            "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length", "damping"});
-  const auto need = [&](const char* key, const QuantityKind& kind) {
-    const YAML::Node* n = f.require(key);
-    return n ? in.quantity(*n, f.path(key), kind, Limit::Positive) : std::nullopt;
-  };
-  const auto d = need("diameter", kind::kLength);
-  const auto m = need("mass_per_length", kMassPerLength);
-  const auto ea = need("EA", kind::kForce);
-  if (!d || !m || !ea) return std::nullopt;
-  LineType t{kPi * *d * *d / 4.0, *m, *ea, *d, e.value};
-  if (const YAML::Node* n = f.find("weight_in_water")) {
-    const auto w = in.quantity(*n, f.path("weight_in_water"), kWeightPerLength);
-    const double expected = (t.mass_per_length - rho * t.area) * g;
-    if (w && rho > 0.0 && std::abs(*w - expected) > 1e-3 * std::abs(expected)) {
-      diag.error(*n, f.path("weight_in_water") +
-                         ": does not match the mass and diameter in this water (got " +
-                         formatNumber(*w) + ", expected " + formatNumber(expected) +
-                         " = (mass_per_length - rho pi d^2 / 4) g, within 0.1%)");
-      return std::nullopt;
-    }
-  }
-  return t;
-}
-
-std::optional<MooringLine> readMooringLine(Input& in, const YAML::Node& item,
-                                           const std::string& path) {
-  Fields f(in.diag, item, path, {"anchor", "fairlead", "length", "type", "elements", "order"});
-  MooringLine line;
-  const YAML::Node* a = f.require("anchor");
-  const YAML::Node* b = f.require("fairlead");
-  const YAML::Node* l = f.require("length");
-  const YAML::Node* t = f.require("type");
-  const auto anchor = a ? in.vector3(*a, f.path("anchor"), kind::kLength) : std::nullopt;
-  const auto fairlead = b ? in.vector3(*b, f.path("fairlead"), kind::kLength) : std::nullopt;
-  const auto length =
-      l ? in.quantity(*l, f.path("length"), kind::kLength, Limit::Positive) : std::nullopt;
-  const auto type = t ? in.text(*t, f.path("type")) : std::nullopt;
-  line.elements = in.integerOr(f, "elements", 1, 20);
-  line.order = in.integerOr(f, "order", 2, 3);
-  if (line.order > 4)
-    in.diag.error(f.keyLine("order"), f.path("order") + ": out of range (got " +
-                                          std::to_string(line.order) +
-                                          ", expected 2, 3 or 4 nodes an element)");
-  if (!anchor || !fairlead || !length || !type) return std::nullopt;
-  line.anchor = *anchor;
-  line.fairlead = *fairlead;
-  line.length = *length;
-  line.type = *type;
-  return line;
-}
-
-// Whether the line can start: its ends in the water, above the bed, and its catenary solvable
-// (the same inputs build_initial_shape.cpp gives it), reported at the line's item.
-bool checkStart(Diagnostics& diag, const YAML::Node& item, const std::string& path,
-                const MooringLine& line, const LineType& type, double rho, double g, double depth) {
-  const double tolerance = 1e-6 * std::max(depth, line.length);
-  for (const auto& [end, where] : {std::pair{&line.anchor, "anchor"}, {&line.fairlead, "fairlead"}})
-    if (end->z() < -depth - tolerance) {
-      diag.error(item,
-                 path + "." + where + ": below the seabed (got z = " + formatNumber(end->z()) +
-                     ", expected z >= " + formatNumber(-depth) + ", the bed at the water's depth)");
-      return false;
-    }
-  hydro::CatenaryLineInputs in;
-  const Eigen::Vector3d span = line.fairlead - line.anchor;
-  in.horizontal_span = span.head<2>().norm();
-  in.vertical_span = span.z();
-  in.unstretched_length = line.length;
-  in.weight = (type.mass_per_length - rho * type.area) * g;
-  in.axial_stiffness = type.ea;
-  in.seabed = line.anchor.z() <= -depth + tolerance;
-  try {
-    hydro::solveCatenary(in);
-    return true;
-  } catch (const hydro::CatenaryError& e) {
-    diag.error(item, path + ": no catenary start: " + e.what());
-    return false;
-  }
-}
 
 YAML::Node point(const Eigen::Vector3d& p) {
   return flowSequence({scenarioNumber(p.x()), scenarioNumber(p.y()), scenarioNumber(p.z())});
@@ -179,6 +91,54 @@ void addFairleadSupports(YAML::Node& doc, const std::string& name,
     s["history"] = history;
     doc["supports"].push_back(s);
   }
+}
+
+// The lines: of mooring line `name`: its reference the unstretched length laid straight from the
+// anchor towards the fairlead, one line of its type, or its segments (name_segment_1, ...; each a
+// segment_of: name) with the attachments' point masses (elements:) and bodies (bodies:) at their
+// connection nodes. Returns the reference's end.
+Eigen::Vector3d addLine(YAML::Node& doc, const std::string& name, const MooringLine& m) {
+  Eigen::Vector3d along(m.fairlead.x() - m.anchor.x(), m.fairlead.y() - m.anchor.y(), 0.0);
+  along.normalize();
+  const auto segmentName = [&](size_t j) { return name + "_segment_" + std::to_string(j + 1); };
+  double s = 0.0;
+  for (size_t j = 0; j < m.segments.size(); ++j) {
+    const MooringSegment& segment = m.segments[j];
+    YAML::Node line;
+    line["name"] = m.has_segments ? segmentName(j) : name;
+    if (j == 0)
+      line["from"] = point(m.anchor);
+    else
+      line["start_node"] = segmentName(j - 1) + ".end";
+    s += segment.length;
+    line["to"] = point(m.anchor + s * along);
+    line["elements"] = segment.elements;
+    line["order"] = segment.order;
+    line["section"] = segment.type;
+    line["initial_shape"] = "catenary";
+    if (m.has_segments) line["segment_of"] = name;
+    doc["lines"].push_back(line);
+  }
+  for (const MooringAttachment& a : m.attachments) {
+    const std::string node = segmentName(a.at - 1) + ".end";
+    if (a.mass > 0.0) {
+      YAML::Node mass;
+      mass["type"] = "point_mass";
+      mass["node"] = node;
+      mass["mass"] = scenarioNumber(a.mass);
+      doc["elements"].push_back(mass);
+    }
+    if (a.volume > 0.0) {
+      YAML::Node body;
+      body["node"] = node;
+      body["type"] = "point";
+      body["volume"] = scenarioNumber(a.volume);
+      if (a.drag_area) body["drag_area"] = *a.drag_area;
+      if (a.added_mass) body["Ca"] = *a.added_mass;
+      doc["bodies"].push_back(body);
+    }
+  }
+  return m.anchor + s * along;
 }
 
 YAML::Node summaryItem(const char* quantity, const char* key, const std::string& value,
@@ -218,20 +178,8 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
   if (list && items.empty()) diag.error(*list, "mooring_lines: empty (expected at least one line)");
   for (size_t i = 0; i < items.size(); ++i) {
     const std::string path = itemPath("mooring_lines", i);
-    auto line = readMooringLine(in, items[i], path);
-    if (!line) continue;
-    const auto type = types.find(line->type);
-    if (type == types.end()) {
-      if (!top.find("line_types") || !(*top.find("line_types"))[line->type]) {
-        std::string names;
-        for (const auto& entry : types) names += (names.empty() ? "" : ", ") + entry.first;
-        diag.error(items[i]["type"], path + ".type: unknown line type (got '" + line->type +
-                                         "', expected one of line_types: " +
-                                         (names.empty() ? "none defined" : names) + ")");
-      }
-      continue;
-    }
-    if (diag.empty() && checkStart(diag, items[i], path, *line, type->second, rho, g, depth))
+    const auto line = readMooringLine(in, items[i], path, types, top.find("line_types"));
+    if (line && diag.empty() && checkStart(diag, items[i], path, *line, types, rho, g, depth))
       lines.push_back(*line);
   }
   for (const char* key : {"statics", "dynamic"}) {
@@ -269,32 +217,25 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
     if (const YAML::Node damping = t.node["damping"]) section["damping"] = damping;
     doc["sections"][name] = section;
   }
+  // Explicit elements (the attachments' point masses) come first in the model's numbering.
   int elements_before = 0;
+  for (const MooringLine& m : lines)
+    for (const MooringAttachment& a : m.attachments) elements_before += a.mass > 0.0 ? 1 : 0;
   for (size_t i = 0; i < lines.size(); ++i) {
     const MooringLine& m = lines[i];
     const std::string name = "line_" + std::to_string(i + 1);
-    // The reference: the unstretched length laid straight from the anchor towards the fairlead.
-    Eigen::Vector3d along(m.fairlead.x() - m.anchor.x(), m.fairlead.y() - m.anchor.y(), 0.0);
-    along.normalize();
-    const Eigen::Vector3d end = m.anchor + m.length * along;
-    YAML::Node line;
-    line["name"] = name;
-    line["from"] = point(m.anchor);
-    line["to"] = point(end);
-    line["elements"] = m.elements;
-    line["order"] = m.order;
-    line["section"] = m.type;
-    line["initial_shape"] = "catenary";
-    doc["lines"].push_back(line);
+    const Eigen::Vector3d end = addLine(doc, name, m);
     YAML::Node anchor;
     anchor["node"] = name + ".start";
     anchor["fix"] = flowSequence({"x", "y", "z"});
     doc["supports"].push_back(anchor);
     addFairleadSupports(doc, name, end, m.fairlead, platform);
+    int elements = 0;
+    for (const MooringSegment& segment : m.segments) elements += segment.elements;
     if (!top.find("summary")) {
       const std::string k = std::to_string(i + 1);
       const std::string first = std::to_string(elements_before + 1);
-      const std::string last = std::to_string(elements_before + m.elements);
+      const std::string last = std::to_string(elements_before + elements);
       YAML::Node s = doc["summary"];
       s["fairlead_tension_" + k] = summaryItem("end_tension", "element", last, "last");
       s["fairlead_horizontal_" + k] = summaryItem("reaction_horizontal", "node", name + ".end");
@@ -306,7 +247,7 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
       s["anchor_vertical_" + k] = uplift;
       s["length_on_seabed_" + k] = summaryItem("length_on_seabed", "line", name);
     }
-    elements_before += m.elements;
+    elements_before += elements;
   }
   doc["loads"]["gravity"]["g"] = scenarioNumber(g);
   if (const YAML::Node* steps = top.find("steps")) {

@@ -59,7 +59,8 @@ std::pair<double, double> principalResultants(const SummarySpec& spec, const mod
 // the seabed load summed), plus the anchor's upward reaction when the anchor is held at the
 // bed's level (the penalty bed carries the laid line a penetration below it, so the anchor
 // holds the end of the laid part), over the submerged weight per length. A line on a rigid bed
-// gives its laid length L_B; a fully suspended line 0. In a static equilibrium under weight,
+// gives its laid length L_B; a fully suspended line 0. Each element counts over its own weight
+// per length (the segments of a multi-segment line differ). In a static equilibrium under weight,
 // buoyancy and the bed alone it equals L - V_F / w, with V_F the fairlead's vertical force.
 double lengthOnSeabed(const SummarySpec& spec, const model::Model& model,
                       const SummarySource& source) {
@@ -68,16 +69,20 @@ double lengthOnSeabed(const SummarySpec& spec, const model::Model& model,
     if (dynamic_cast<const hydro::SeabedLineLoad*>(load.get())) bed = load.get();
   if (!bed)
     throw std::out_of_range("summary \"" + spec.name + "\": the model has no seabed contact");
-  double carried = 0.0;
+  double length = 0.0;  // each element's carried weight over its weight per length
   Eigen::VectorXd p;
-  for (const int e : spec.elements) {
+  for (size_t i = 0; i < spec.elements.size(); ++i) {
+    const int e = spec.elements[i];
     requireIndex(e, model.elementCount(), spec, "element");
     model.element(e).lineLoad({model.reference(), source.state(), e}, *bed, p, nullptr);
+    double carried = 0.0;
     for (Eigen::Index a = 2; a < p.size(); a += 3) carried += p(a);
+    length += carried / spec.element_weights.at(i);
   }
-  carried *= source.state().load_factor;  // line loads act scaled by it
-  if (spec.node >= 0) carried += std::max(source.reactions()(2, spec.node), 0.0);
-  return carried / spec.weight_per_length;
+  length *= source.state().load_factor;  // line loads act scaled by it
+  if (spec.node >= 0)
+    length += std::max(source.reactions()(2, spec.node), 0.0) / spec.weight_per_length;
+  return length;
 }
 
 // The frame closing a step: everything is already computed.

@@ -15,88 +15,214 @@ std::string str(double v) {
   return s.str();
 }
 
-// The spans (x_F, z_F) that the fairlead forces (H, V) give, and their Jacobian d(x, z)/d(H, V).
-struct Spans {
-  Eigen::Vector2d value;
-  Eigen::Matrix2d jacobian;
+// The line as the solve sees it: its segments from the anchor, the force at each connection
+// (zero-length for one segment) and the arc length where each segment starts (start[n] = L).
+struct Line {
+  const CatenaryLineInputs& in;
+  std::vector<CatenarySegment> segments;
+  std::vector<double> forces;
+  std::vector<double> start;
+  double length() const { return start.back(); }
+  // The submerged weight of the whole line with its point forces, and a scale for forces.
+  double netWeight() const;
+  double forceScale() const;
 };
 
-bool onSeabed(const CatenaryLineInputs& in, double V) {
-  return in.seabed && V < in.weight * in.unstretched_length;
+std::vector<CatenarySegment> segmentsOf(const CatenaryLineInputs& in) {
+  if (!in.segments.empty()) return in.segments;
+  return {{in.unstretched_length, in.weight, in.axial_stiffness}};
 }
 
-// Stretch of the laid part up to s (<= L_B): (1/EA) int_0^s T, T = max(H - C_B w (L_B - s), 0).
-double laidStretch(const CatenaryLineInputs& in, double H, double laid, double s) {
-  const double cw = in.friction * in.weight;
-  const double start = cw > 0.0 ? std::max(laid - H / cw, 0.0) : 0.0;  // where T reaches 0
-  if (s <= start) return 0.0;
-  return ((H - cw * laid) * (s - start) + 0.5 * cw * (s * s - start * start)) / in.axial_stiffness;
+Line makeLine(const CatenaryLineInputs& in) {
+  Line l{in,
+         segmentsOf(in),
+         in.segments.empty() ? std::vector<double>() : in.connection_forces,
+         {0.0}};
+  for (const CatenarySegment& s : l.segments) l.start.push_back(l.start.back() + s.length);
+  return l;
 }
 
-Spans spans(const CatenaryLineInputs& in, double H, double V) {
-  const double w = in.weight, L = in.unstretched_length, EA = in.axial_stiffness;
-  const double a = V / H, ra = std::sqrt(1.0 + a * a);
-  Spans s;
-  if (onSeabed(in, V)) {  // partly on the seabed, friction on the laid part
-    const double laid = L - V / w;
-    const double cw = in.friction * w;
-    const double start = cw > 0.0 ? laid - H / cw : -1.0;  // s0 of the friction term
-    double friction = 0.0, dfdH = 0.0, dfdV = 0.0;
-    if (cw > 0.0 && start > 0.0) {
-      friction = cw / (2.0 * EA) * (start * start - laid * laid);
-      dfdH = -start / EA;
-      dfdV = H / (w * EA);
-    } else if (cw > 0.0) {
-      friction = -cw / (2.0 * EA) * laid * laid;
-      dfdV = in.friction * laid / EA;
-    }
-    s.value = {laid + H / w * std::asinh(a) + H * L / EA + friction,
-               H / w * (ra - 1.0) + V * V / (2.0 * EA * w)};
-    s.jacobian << std::asinh(a) / w - a / (w * ra) + L / EA + dfdH,
-        -1.0 / w + 1.0 / (w * ra) + dfdV, (1.0 / ra - 1.0) / w, a / (w * ra) + V / (EA * w);
-    return s;
+double Line::netWeight() const {
+  double w = 0.0;
+  for (const CatenarySegment& s : segments) w += s.weight * s.length;
+  for (const double f : forces) w -= f;
+  return w;
+}
+
+double Line::forceScale() const {
+  double w = 0.0;
+  for (const CatenarySegment& s : segments) w += s.weight * s.length;
+  for (const double f : forces) w += std::abs(f);
+  return w;
+}
+
+// A laid piece [from, to] of one segment: T(s) = max(top_tension - rate (to - s), 0), rate = C_B w.
+struct LaidPiece {
+  double from, to, top_tension, rate, ea;
+  // int T ds over [a, b] (within the piece) and the length of it in tension.
+  std::pair<double, double> integral(double a, double b) const {
+    const double zero = rate > 0.0 ? to - top_tension / rate : (top_tension > 0.0 ? a : b);
+    const double lo = std::max(a, zero);
+    if (!(lo < b)) return {0.0, 0.0};
+    return {(b - lo) * (tension(lo) + tension(b)) / 2.0, b - lo};
   }
-  const double b = (V - w * L) / H, rb = std::sqrt(1.0 + b * b);  // suspended
-  s.value = {H / w * (std::asinh(a) - std::asinh(b)) + H * L / EA,
-             H / w * (ra - rb) + (V * L - 0.5 * w * L * L) / EA};
-  s.jacobian << (std::asinh(a) - std::asinh(b)) / w - (a / ra - b / rb) / w + L / EA,
-      (1.0 / ra - 1.0 / rb) / w, (1.0 / ra - 1.0 / rb) / w, (a / ra - b / rb) / w + L / EA;
+  double tension(double s) const { return std::max(top_tension - rate * (to - s), 0.0); }
+};
+
+// A suspended piece of one segment, `length` from `from` up, its vertical force `bottom` at its
+// lower end (V at its top: bottom + w length).
+struct HangingPiece {
+  double from, length, bottom, weight, ea;
+};
+
+// What a piece adds to the spans (x, z), and its Jacobian d(x, z)/d(H, V) at fixed length (V
+// moving the vertical forces of every piece alike), over the length r from its lower end:
+//   x = H/w [asinh(a) - asinh(b)] + H r / EA, z = H/w [sqrt(1 + a^2) - sqrt(1 + b^2)]
+//       + (V_b r + w r^2 / 2) / EA, a = (V_b + w r) / H, b = V_b / H.
+struct Spans {
+  Eigen::Vector2d value = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d jacobian = Eigen::Matrix2d::Zero();
+};
+
+Spans hangingSpans(const HangingPiece& p, double H, double r) {
+  const double w = p.weight, EA = p.ea;
+  const double a = (p.bottom + w * r) / H, b = p.bottom / H;
+  const double ra = std::sqrt(1.0 + a * a), rb = std::sqrt(1.0 + b * b);
+  Spans s;
+  s.value = {H / w * (std::asinh(a) - std::asinh(b)) + H * r / EA,
+             H / w * (ra - rb) + (p.bottom * r + 0.5 * w * r * r) / EA};
+  s.jacobian << (std::asinh(a) - std::asinh(b)) / w - (a / ra - b / rb) / w + r / EA,
+      (1.0 / ra - 1.0 / rb) / w, (1.0 / ra - 1.0 / rb) / w, (a / ra - b / rb) / w + r / EA;
   return s;
 }
 
-double residualNorm(const CatenaryLineInputs& in, const Eigen::Vector2d& f) {
-  return (spans(in, f(0), f(1)).value - Eigen::Vector2d(in.horizontal_span, in.vertical_span))
+// The line at fairlead forces (H, V): its laid pieces (from the touchdown down) and its hanging
+// pieces (from the touchdown up).
+struct Profile {
+  double touchdown = 0.0;  // L_B (beyond L when V < 0 on a laid line: the equations' extension)
+  std::vector<LaidPiece> laid;
+  std::vector<HangingPiece> hanging;
+  double anchor_tension = 0.0;   // T at the anchor, on the bed
+  double anchor_vertical = 0.0;  // V at the anchor, suspended
+  std::vector<int> laid_buoys;   // connections with F > 0 on the laid part
+};
+
+Profile profile(const Line& l, double H, double V) {
+  const int n = static_cast<int>(l.segments.size());
+  std::vector<double> top(n), bottom(n);  // vertical force at each segment's ends
+  double v = V;
+  for (int i = n - 1; i >= 0; --i) {
+    top[i] = v;
+    bottom[i] = v - l.segments[i].weight * l.segments[i].length;
+    v = bottom[i] + (i > 0 ? l.forces[i - 1] : 0.0);
+  }
+  Profile p;
+  int touch = -1;              // the segment of the touchdown
+  bool at_connection = false;  // at its lower connection: a clump weight resting on the bed
+  if (l.in.seabed && bottom[0] < 0.0) {
+    touch = n - 1;  // V <= 0 all the way up: the top segment's equations, extended
+    for (int i = 0; i < n; ++i) {
+      if (i > 0 && bottom[i] > 0.0) {
+        touch = i;
+        at_connection = true;
+        break;
+      }
+      if (top[i] > 0.0) {
+        touch = i;
+        break;
+      }
+    }
+  }
+  const auto hang = [&](int i) {
+    p.hanging.push_back({l.start[i], l.segments[i].length, bottom[i], l.segments[i].weight,
+                         l.segments[i].axial_stiffness});
+  };
+  if (touch < 0) {
+    for (int i = 0; i < n; ++i) hang(i);
+    p.anchor_vertical = bottom[0];
+    return p;
+  }
+  const CatenarySegment& t = l.segments[touch];
+  if (at_connection) {
+    p.touchdown = l.start[touch];
+    hang(touch);
+  } else {
+    p.touchdown = l.start[touch] - bottom[touch] / t.weight;
+    p.hanging.push_back({p.touchdown, top[touch] / t.weight, 0.0, t.weight, t.axial_stiffness});
+  }
+  for (int i = touch + 1; i < n; ++i) hang(i);
+  const int highest = at_connection ? touch - 1 : touch;  // the highest segment with a laid piece
+  double T = H;
+  for (int i = highest; i >= 0; --i) {
+    const double to = i == highest ? p.touchdown : l.start[i + 1];
+    if (i < touch) {  // connection i lies on the bed at `to`: its share of the bed's reaction
+      const double normal = i == touch - 1 && at_connection ? -top[i] : -l.forces[i];
+      if (l.forces[i] > 0.0) p.laid_buoys.push_back(i);
+      T = std::max(T - l.in.friction * std::max(normal, 0.0), 0.0);
+    }
+    const CatenarySegment& s = l.segments[i];
+    p.laid.push_back({l.start[i], to, T, l.in.friction * s.weight, s.axial_stiffness});
+    T = p.laid.back().tension(l.start[i]);
+  }
+  p.anchor_tension = T;
+  return p;
+}
+
+// The spans (x_F, z_F) that the fairlead forces (H, V) give, and their Jacobian: the pieces'
+// sum, the laid part adding its length, its stretch int T / EA, and d/dH = d/dV / C_B = the
+// length in tension over EA (T rises with H, and by C_B for each unit of V the touchdown's
+// friction or a clump's reaction gives up).
+Spans spans(const Line& l, double H, double V) {
+  const Profile p = profile(l, H, V);
+  Spans s;
+  s.value(0) = p.touchdown;
+  for (const LaidPiece& piece : p.laid) {
+    const auto [integral, taut] = piece.integral(piece.from, piece.to);
+    s.value(0) += integral / piece.ea;
+    s.jacobian(0, 0) += taut / piece.ea;
+    s.jacobian(0, 1) += l.in.friction * taut / piece.ea;
+  }
+  for (const HangingPiece& piece : p.hanging) {
+    const Spans h = hangingSpans(piece, H, piece.length);
+    s.value += h.value;
+    s.jacobian += h.jacobian;
+  }
+  return s;
+}
+
+double residualNorm(const Line& l, const Eigen::Vector2d& f) {
+  return (spans(l, f(0), f(1)).value - Eigen::Vector2d(l.in.horizontal_span, l.in.vertical_span))
       .norm();
 }
 
 // The residual a converged solve reaches: 1e-12 of the line's length (round-off of the spans).
-double tolerance(const CatenaryLineInputs& in) { return 1e-12 * in.unstretched_length; }
+double tolerance(const Line& l) { return 1e-12 * l.length(); }
 
 // Safeguarded Newton from f; returns whether it converged, counting its iterations.
-bool newton(const CatenaryLineInputs& in, Eigen::Vector2d& f, int& iterations, int max_iterations) {
-  const Eigen::Vector2d target(in.horizontal_span, in.vertical_span);
-  double r_norm = residualNorm(in, f);
+bool newton(const Line& l, Eigen::Vector2d& f, int& iterations, int max_iterations) {
+  const Eigen::Vector2d target(l.in.horizontal_span, l.in.vertical_span);
+  double r_norm = residualNorm(l, f);
   for (int it = 0; it < max_iterations; ++it) {
-    if (r_norm <= tolerance(in)) return true;
-    const Spans s = spans(in, f(0), f(1));
+    if (r_norm <= tolerance(l)) return true;
+    const Spans s = spans(l, f(0), f(1));
     Eigen::Vector2d step = s.jacobian.partialPivLu().solve(target - s.value);
     if (!step.allFinite()) return false;
     // Keep H above a tenth of its value: the equations hold for H > 0 only.
     if (f(0) + step(0) < 0.1 * f(0)) step *= 0.9 * f(0) / -step(0);
     double scale = 1.0;
     Eigen::Vector2d trial = f + step;
-    double trial_norm = residualNorm(in, trial);
+    double trial_norm = residualNorm(l, trial);
     for (int k = 0; k < 40 && !(trial_norm < r_norm); ++k) {  // backtrack
       scale *= 0.5;
       trial = f + scale * step;
-      trial_norm = residualNorm(in, trial);
+      trial_norm = residualNorm(l, trial);
     }
     ++iterations;
-    if (!(trial_norm < r_norm)) return trial_norm <= tolerance(in);
+    if (!(trial_norm < r_norm)) return trial_norm <= tolerance(l);
     f = trial;
     r_norm = trial_norm;
   }
-  return r_norm <= tolerance(in);
+  return r_norm <= tolerance(l);
 }
 
 // Bisection of a monotone increasing g on [lo, hi] (g(lo) <= 0 <= g(hi)) to round-off.
@@ -111,54 +237,94 @@ double bisect(G g, double lo, double hi, int& steps) {
 }
 
 // The vertical force V at which H gives the vertical span (z_F rises monotonically with V).
-double verticalFor(const CatenaryLineInputs& in, double H, int& steps) {
-  const double wl = in.weight * in.unstretched_length;
-  const auto g = [&](double V) { return spans(in, H, V).value(1) - in.vertical_span; };
-  double lo = in.seabed ? 0.0 : -wl, hi = wl;
+double verticalFor(const Line& l, double H, int& steps) {
+  const double wl = l.forceScale();
+  const auto g = [&](double V) { return spans(l, H, V).value(1) - l.in.vertical_span; };
+  double lo = l.in.seabed ? 0.0 : -wl, hi = wl;
   while (g(lo) > 0.0) lo -= 2.0 * (hi - lo);
   while (g(hi) < 0.0) hi += 2.0 * (hi - lo);
   return bisect(g, lo, hi, steps);
 }
 
 // The bracketing fallback: H for the horizontal span along the curve of the vertical one.
-Eigen::Vector2d nestedBisection(const CatenaryLineInputs& in, int& steps) {
+Eigen::Vector2d nestedBisection(const Line& l, int& steps) {
   const auto g = [&](double H) {
-    return spans(in, H, verticalFor(in, H, steps)).value(0) - in.horizontal_span;
+    return spans(l, H, verticalFor(l, H, steps)).value(0) - l.in.horizontal_span;
   };
-  double lo = 1e-6 * in.weight * in.unstretched_length, hi = in.weight * in.unstretched_length;
+  double lo = 1e-6 * l.forceScale(), hi = l.forceScale();
   while (g(lo) > 0.0) lo *= 1e-3;
   while (g(hi) < 0.0) hi *= 4.0;
   const double H = bisect(g, lo, hi, steps);
-  return {H, verticalFor(in, H, steps)};
+  return {H, verticalFor(l, H, steps)};
 }
 
-// Peyrot and Goulois' start (MAP++'s): lambda from the length over the chord.
-Eigen::Vector2d initialGuess(const CatenaryLineInputs& in) {
-  const double x = in.horizontal_span, z = in.vertical_span, L = in.unstretched_length;
+// Peyrot and Goulois' start (MAP++'s): lambda from the length over the chord, the line's mean
+// submerged weight (without its buoys, should they outweigh it).
+Eigen::Vector2d initialGuess(const Line& l) {
+  const double x = l.in.horizontal_span, z = l.in.vertical_span, L = l.length();
+  double weight = l.netWeight() / L;
+  if (!(weight > 0.0)) {  // without the buoys' uplift
+    weight = l.netWeight();
+    for (const double f : l.forces) weight += std::max(f, 0.0);
+    weight /= L;
+  }
   const double lambda =
       L * L <= x * x + z * z ? 0.2 : std::sqrt(3.0 * ((L * L - z * z) / (x * x) - 1.0));
-  return {std::max(std::abs(in.weight * x / (2.0 * lambda)), 1e-6 * in.weight * L),
-          0.5 * in.weight * (z / std::tanh(lambda) + L)};
+  return {std::max(std::abs(weight * x / (2.0 * lambda)), 1e-6 * weight * L),
+          0.5 * weight * (z / std::tanh(lambda) + L)};
 }
 
-// The unstretched length that hangs straight down from the fairlead when H = 0 (its stretch under
-// its own weight included): L_s (1 + w L_s / (2 EA)) = z_F. Laid out straight, the rest reaches
-// L - L_s along the bed: a span not beyond that leaves the line slack (H = 0, no catenary).
-double hangingLength(const CatenaryLineInputs& in) {
-  const double c = in.weight / (2.0 * in.axial_stiffness), z = std::max(in.vertical_span, 0.0);
-  return 2.0 * z / (1.0 + std::sqrt(1.0 + 4.0 * c * z));
+// The height of the line above arc length s hanging straight down from the fairlead with H = 0
+// (its stretch under the weight below included; V = 0 at s): sum of L_i + (V_b L_i + w_i L_i^2
+// / 2) / EA_i over the pieces above s. It falls as s rises.
+double hangingHeight(const Line& l, double s) {
+  double height = 0.0, v = 0.0;
+  for (size_t i = 0; i < l.segments.size(); ++i) {
+    const CatenarySegment& g = l.segments[i];
+    const double r = l.start[i + 1] - std::max(s, l.start[i]);
+    if (r <= 0.0) continue;
+    if (s < l.start[i] && i > 0) v -= l.forces[i - 1];
+    height += r + (v * r + 0.5 * g.weight * r * r) / g.axial_stiffness;
+    v += g.weight * r;
+  }
+  return height;
 }
 
-void check(const CatenaryLineInputs& in) {
-  const auto positive = [](double v, const char* what) {
-    if (!(v > 0.0) || !std::isfinite(v))
-      throw CatenaryError(std::string("catenary: ") + what + " must be positive and finite (got " +
-                          str(v) + ")");
-  };
-  positive(in.unstretched_length, "the unstretched length");
-  positive(in.weight, "the submerged weight per length");
-  positive(in.axial_stiffness, "the axial stiffness EA");
-  positive(in.max_strain, "the largest strain");
+// The unstretched length that hangs straight down to the fairlead when H = 0: L - s with
+// hangingHeight(s) = z_F (L or more when the whole line hanging does not reach z_F). Laid out
+// straight, the rest reaches L - L_s along the bed: a span not beyond that leaves the line slack
+// (H = 0, no catenary).
+double hangingLength(const Line& l) {
+  const double z = std::max(l.in.vertical_span, 0.0), L = l.length();
+  if (hangingHeight(l, 0.0) <= z) return L;
+  int steps = 0;
+  return L - bisect([&](double s) { return z - hangingHeight(l, s); }, 0.0, L, steps);
+}
+
+void checkPositive(double v, const std::string& what) {
+  if (!(v > 0.0) || !std::isfinite(v))
+    throw CatenaryError("catenary: " + what + " must be positive and finite (got " + str(v) + ")");
+}
+
+void check(const Line& l) {
+  const CatenaryLineInputs& in = l.in;
+  const bool several = in.segments.size() > 1;
+  for (size_t i = 0; i < l.segments.size(); ++i) {
+    const std::string of = several ? " of segment " + std::to_string(i + 1) : "";
+    checkPositive(l.segments[i].length, "the unstretched length" + of);
+    checkPositive(l.segments[i].weight, "the submerged weight per length" + of);
+    checkPositive(l.segments[i].axial_stiffness, "the axial stiffness EA" + of);
+  }
+  if (!in.segments.empty() && in.connection_forces.size() + 1 != in.segments.size())
+    throw CatenaryError("catenary: " + std::to_string(in.connection_forces.size()) +
+                        " connection forces for " + std::to_string(in.segments.size()) +
+                        " segments (expected one for each connection point, " +
+                        std::to_string(in.segments.size() - 1) + ")");
+  for (size_t c = 0; c < l.forces.size(); ++c)
+    if (!std::isfinite(l.forces[c]))
+      throw CatenaryError("catenary: the force at connection point " + std::to_string(c + 1) +
+                          " must be finite (got " + str(l.forces[c]) + ")");
+  checkPositive(in.max_strain, "the largest strain");
   if (!(in.friction >= 0.0) || !std::isfinite(in.friction))
     throw CatenaryError("catenary: the seabed friction coefficient must be zero or positive (got " +
                         str(in.friction) + ")");
@@ -170,90 +336,97 @@ void check(const CatenaryLineInputs& in) {
   if (in.seabed && in.vertical_span < 0.0)
     throw CatenaryError("catenary: the fairlead is below the seabed (got " + str(in.vertical_span) +
                         " above the anchor on the bed, expected >= 0)");
-  const double strain =
-      std::hypot(in.horizontal_span, in.vertical_span) / in.unstretched_length - 1;
+  const double L = l.length(), chord = std::hypot(in.horizontal_span, in.vertical_span);
+  const double strain = chord / L - 1;
   if (strain > in.max_strain)
     throw CatenaryError("catenary: the line is too short for its span (got a chord of " +
-                        str(std::hypot(in.horizontal_span, in.vertical_span)) + " for " +
-                        str(in.unstretched_length) + " unstretched, a strain of " + str(strain) +
+                        str(chord) + " for " + str(L) + " unstretched, a strain of " + str(strain) +
                         ", expected at most " + str(in.max_strain) + ")");
-  if (in.seabed && in.horizontal_span <= in.unstretched_length - hangingLength(in))
+  const double hanging = hangingLength(l);
+  if (in.seabed && in.horizontal_span <= L - hanging)
     throw CatenaryError(
         "catenary: the line is too long for its span: it would lie slack on the seabed (got " +
-        str(in.unstretched_length) + " unstretched for a span of " + str(in.horizontal_span) +
-        " and " + str(hangingLength(in)) +
+        str(L) + " unstretched for a span of " + str(in.horizontal_span) + " and " + str(hanging) +
         " hanging straight down to the fairlead, expected "
         "less than their sum: the shape of a slack laid line is not determined)");
 }
 
-// A taut line on the bed (z_F = 0, x_F > L): V = 0 and the stretch x_F - L fixes H.
-double fullyLaidHorizontal(const CatenaryLineInputs& in) {
-  const double stretch = in.horizontal_span - in.unstretched_length;
-  const double cw = in.friction * in.weight, L = in.unstretched_length, EA = in.axial_stiffness;
-  if (cw > 0.0) {
-    const double h = std::sqrt(2.0 * EA * cw * stretch);  // T reaches 0 on the bed
-    if (h <= cw * L) return h;
-    return (EA * stretch + 0.5 * cw * L * L) / L;  // the whole line in tension
-  }
-  return EA * stretch / L;
+// A taut line on the bed (z_F = 0, x_F > L): V = 0 and the laid part's stretch x_F - L fixes H
+// (it rises with H): bisection to round-off.
+double fullyLaidHorizontal(const Line& l, int& steps) {
+  const auto g = [&](double H) { return spans(l, H, 0.0).value(0) - l.in.horizontal_span; };
+  double hi = l.forceScale();
+  for (const CatenarySegment& s : l.segments)
+    hi = std::max(hi, s.axial_stiffness * (l.in.horizontal_span / l.length() - 1.0));
+  while (g(hi) < 0.0) hi *= 2.0;
+  return bisect(g, 0.0, hi, steps);
 }
 
 }  // namespace
 
+double CatenaryLine::length() const { return makeLine(inputs).length(); }
 double CatenaryLine::fairleadTension() const { return std::hypot(horizontal, vertical); }
 double CatenaryLine::anchorTension() const {
   return std::hypot(anchor_horizontal, anchor_vertical);
 }
 
 CatenaryPoint CatenaryLine::at(double s) const {
-  const CatenaryLineInputs& in = inputs;
-  const double w = in.weight, EA = in.axial_stiffness, H = horizontal;
-  s = std::clamp(s, 0.0, in.unstretched_length);
-  CatenaryPoint p;
-  if (laid_length > 0.0) {
-    const double on_bed = std::min(s, laid_length);
-    p.x = on_bed + laidStretch(in, H, laid_length, on_bed);
-    p.tension = std::max(H - in.friction * w * (laid_length - on_bed), 0.0);
-    if (s <= laid_length) return p;
-    const double r = s - laid_length, a = w * r / H;
-    p.x += H / w * std::asinh(a) + H * r / EA;
-    p.z = H / w * (std::sqrt(1.0 + a * a) - 1.0) + w * r * r / (2.0 * EA);
-    p.tension = std::hypot(H, w * r);
-    return p;
+  const Line l = makeLine(inputs);
+  const Profile p = profile(l, horizontal, vertical);
+  s = std::clamp(s, 0.0, l.length());
+  CatenaryPoint point;
+  point.tension = p.laid.empty() ? std::hypot(horizontal, p.anchor_vertical) : p.anchor_tension;
+  for (auto piece = p.laid.rbegin(); piece != p.laid.rend() && s > piece->from; ++piece) {
+    const double to = std::min(s, piece->to);
+    point.x += to - piece->from + piece->integral(piece->from, to).first / piece->ea;
+    point.tension = piece->tension(to);
   }
-  const double va = vertical - w * in.unstretched_length;
-  const double a = (va + w * s) / H, b = va / H;
-  p.x = H / w * (std::asinh(a) - std::asinh(b)) + H * s / EA;
-  p.z = H / w * (std::sqrt(1.0 + a * a) - std::sqrt(1.0 + b * b)) + (va * s + 0.5 * w * s * s) / EA;
-  p.tension = std::hypot(H, va + w * s);
-  return p;
+  if (s <= p.touchdown) return point;
+  for (const HangingPiece& piece : p.hanging) {
+    if (s <= piece.from) break;
+    const double r = std::min(s - piece.from, piece.length);
+    const Spans h = hangingSpans(piece, horizontal, r);
+    point.x += h.value(0);
+    point.z += h.value(1);
+    point.tension = std::hypot(horizontal, piece.bottom + piece.weight * r);
+  }
+  return point;
 }
 
 CatenaryLine solveCatenary(const CatenaryLineInputs& in) {
-  check(in);
+  const Line l = makeLine(in);
+  check(l);
   CatenaryLine line;
   line.inputs = in;
+  line.segments = l.segments;
   Eigen::Vector2d f;
-  if (in.seabed && in.vertical_span == 0.0) {
-    f = {fullyLaidHorizontal(in), 0.0};
+  const bool fully_laid = in.seabed && in.vertical_span == 0.0;
+  if (fully_laid) {
+    f = {fullyLaidHorizontal(l, line.iterations), 0.0};
   } else {
-    f = initialGuess(in);
-    if (!newton(in, f, line.iterations, 100)) {
-      f = nestedBisection(in, line.iterations);
-      if (!newton(in, f, line.iterations, 20))
-        throw CatenaryError("catenary: no solution found to " + str(tolerance(in)) +
+    f = initialGuess(l);
+    if (!newton(l, f, line.iterations, 100)) {
+      f = nestedBisection(l, line.iterations);
+      if (!newton(l, f, line.iterations, 20))
+        throw CatenaryError("catenary: no solution found to " + str(tolerance(l)) +
                             " of the spans (a line this solve should start: please report it)");
     }
   }
   line.horizontal = f(0);
   line.vertical = f(1);
-  const double w = in.weight, L = in.unstretched_length;
-  if (in.seabed && f(1) < w * L) {
-    line.laid_length = L - f(1) / w;
-    line.anchor_horizontal = std::max(f(0) - in.friction * w * line.laid_length, 0.0);
-  } else {
+  const Profile p = profile(l, f(0), f(1));
+  if (!p.laid_buoys.empty())
+    throw CatenaryError(
+        "catenary: the buoy at connection point " + std::to_string(p.laid_buoys.front() + 1) +
+        " lies on the laid part (got " + str(l.forces[p.laid_buoys.front()]) + " of uplift at " +
+        str(l.start[p.laid_buoys.front() + 1]) + " from the anchor, " + str(p.touchdown) +
+        " laid; expected buoys on the suspended part: one on the bed would lift it there)");
+  line.laid_length = fully_laid ? l.length() : std::min(p.touchdown, l.length());
+  if (p.laid.empty()) {
     line.anchor_horizontal = f(0);
-    line.anchor_vertical = f(1) - w * L;
+    line.anchor_vertical = p.anchor_vertical;
+  } else {
+    line.anchor_horizontal = p.anchor_tension;
   }
   return line;
 }

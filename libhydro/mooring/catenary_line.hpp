@@ -1,10 +1,11 @@
 #pragma once
-// One elastic catenary mooring line from an anchor to a fairlead, quasi-static, with seabed
+// An elastic catenary mooring line from an anchor to a fairlead, quasi-static, with seabed
 // contact and Coulomb friction on the laid part: the two-equation solve of MAP++ (Jonkman 2007,
 // NREL/TP-500-41958, sec. 4.2: the suspended and the seabed-contact equations; Irvine's linear law
 // T = EA (stretch - 1), w the submerged weight per unstretched length, C_B the seabed friction
 // coefficient). In the line's vertical plane, x along the span from the anchor, z up from it.
 //
+// One segment:
 //   fully suspended (V_A = V - w L >= 0, or no seabed):
 //     x_F = H/w [asinh(V/H) - asinh(V_A/H)] + H L / EA
 //     z_F = H/w [sqrt(1 + (V/H)^2) - sqrt(1 + (V_A/H)^2)] + (V L - w L^2 / 2) / EA
@@ -13,22 +14,48 @@
 //           + C_B w / (2 EA) [-L_B^2 + (L_B - H / (C_B w)) max(L_B - H / (C_B w), 0)]
 //     z_F = H/w [sqrt(1 + (V/H)^2) - 1] + V^2 / (2 EA w)
 //
-// The solve is Newton on (H, V) with the analytic Jacobian from Peyrot and Goulois' start (as
-// MAP++), safeguarded (H kept positive, backtracking on the span residual); should it stall, a
-// nested bisection (V for the vertical span at fixed H, both spans monotone) brackets the root
-// and Newton polishes it. Lines that cannot be started throw CatenaryError (see solve()).
+// Several segments (chain - wire - chain, each its own L_i, w_i, EA_i, anchor first) joined at
+// connection points that may carry a point force F_c (+ up: a buoy's net buoyancy; - down: a clump
+// weight; (rho V - m) g for a body of volume V and mass m): H is the same along the line, and the
+// vertical force steps down the line from the fairlead's V, by w_i L_i over segment i and up by
+// F_c across connection c (the force balance of each piece). Each suspended piece is the first
+// pair of equations above with its own top and bottom vertical forces, the spans their sum; the
+// laid part runs from the anchor to the first point where that vertical force turns positive (the
+// touchdown, inside a segment or at a clump weight resting on the bed), its tension falling from
+// H at the touchdown by C_B w_i per length and by C_B N at each clump weight on the bed (N its
+// part of the bed's reaction), never below zero. One segment is the case above; the Jacobian is
+// the sum of the pieces' (the touchdown's motion cancels between the laid and the hanging part).
+//
+// The solve is Newton on (H, V) with that analytic Jacobian from Peyrot and Goulois' start (as
+// MAP++, with the line's mean submerged weight), safeguarded (H kept positive, backtracking on the
+// span residual); should it stall, a nested bisection (V for the vertical span at fixed H, both
+// spans monotone) brackets the root and Newton polishes it. Lines that cannot be started throw
+// CatenaryError (see solveCatenary()).
 #include <stdexcept>
+#include <vector>
 
 namespace flexmoor::hydro {
+
+// One segment of a multi-segment line.
+struct CatenarySegment {
+  double length = 0.0;           // L_i > 0, unstretched
+  double weight = 0.0;           // w_i > 0, submerged weight per unstretched length
+  double axial_stiffness = 0.0;  // EA_i > 0
+};
 
 struct CatenaryLineInputs {
   double horizontal_span = 0.0;     // x_F >= 0, fairlead from anchor along the bed
   double vertical_span = 0.0;       // z_F, fairlead above the anchor
-  double unstretched_length = 0.0;  // L > 0
-  double weight = 0.0;              // w > 0, submerged weight per unstretched length
-  double axial_stiffness = 0.0;     // EA > 0
-  bool seabed = true;               // the anchor lies on a flat bed that carries the line
-  double friction = 0.0;            // C_B >= 0 on the laid part
+  double unstretched_length = 0.0;  // L > 0          } a line of one segment (ignored when
+  double weight = 0.0;              // w > 0          } segments is given)
+  double axial_stiffness = 0.0;     // EA > 0         }
+  // A line of segments (one or several), the anchor's first, and the point force at each
+  // connection point c (between segments c and c + 1, 0-based here; segments.size() - 1 of
+  // them, + up). One segment given here is the line of those three.
+  std::vector<CatenarySegment> segments;
+  std::vector<double> connection_forces;
+  bool seabed = true;     // the anchor lies on a flat bed that carries the line
+  double friction = 0.0;  // C_B >= 0 on the laid part
   // The largest mean strain a taut line may need (chord / L - 1): above it the line is taken as
   // too short for its span (a typo in the length or the anchor, not a line to start from). 10%
   // is past what steel and chain carry and at the limit of synthetic ropes.
@@ -43,28 +70,32 @@ class CatenaryError : public std::invalid_argument {
 // A point of the solved line at unstretched arc length s from the anchor.
 struct CatenaryPoint {
   double x = 0.0, z = 0.0;  // position, from the anchor
-  double tension = 0.0;     // T(s)
+  double tension = 0.0;     // T(s) (just above s at a connection point)
 };
 
 struct CatenaryLine {
   CatenaryLineInputs inputs;
-  double horizontal = 0.0;         // H at the fairlead
-  double vertical = 0.0;           // V at the fairlead (upward pull on the line)
-  double anchor_horizontal = 0.0;  // H_A = max(H - C_B w L_B, 0): the force on the anchor,
-  double anchor_vertical = 0.0;    // V_A = V - w L when suspended, 0 on the bed (upward +)
-  double laid_length = 0.0;        // L_B, unstretched length on the seabed
-  int iterations = 0;              // Newton iterations (and bisection steps, if it fell back)
+  std::vector<CatenarySegment> segments;  // the line's segments (one for a one-segment line)
+  double horizontal = 0.0;                // H at the fairlead
+  double vertical = 0.0;                  // V at the fairlead (upward pull on the line)
+  double anchor_horizontal = 0.0;         // H_A = max(H - C_B w L_B, 0): the force on the anchor,
+  double anchor_vertical = 0.0;           // V_A = V - w L when suspended, 0 on the bed (upward +)
+  double laid_length = 0.0;               // L_B, unstretched length on the seabed
+  int iterations = 0;  // Newton iterations (and bisection steps, if it fell back)
 
+  double length() const;  // the whole unstretched length
   double fairleadTension() const;
   double anchorTension() const;
-  CatenaryPoint at(double s) const;  // 0 <= s <= L
+  CatenaryPoint at(double s) const;  // 0 <= s <= length()
 };
 
 // Solves the line, or throws CatenaryError for one that cannot be started: a non-positive or
-// non-finite length, weight or stiffness, a negative span or friction, no horizontal span (a
-// vertical line), a fairlead below the seabed, a line too short for its span (mean strain above
-// max_strain), and a line too long for its span on the seabed (x_F <= L - L_s with L_s the length
-// hanging straight down at H = 0: it lies slack on the bed, H = 0, its shape not determined).
+// non-finite length, weight or stiffness (of any segment), a non-finite connection force or not
+// one for each connection, a negative span or friction, no horizontal span (a vertical line), a
+// fairlead below the seabed, a line too short for its span (mean strain above max_strain), a line
+// too long for its span on the seabed (x_F <= L - L_s with L_s the length hanging straight down at
+// H = 0: it lies slack on the bed, H = 0, its shape not determined), and a buoy (F_c > 0) on the
+// laid part (it would lift the line off the bed there: a shape this start does not solve).
 CatenaryLine solveCatenary(const CatenaryLineInputs& inputs);
 
 }  // namespace flexmoor::hydro

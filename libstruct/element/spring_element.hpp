@@ -47,6 +47,8 @@ class PointMassElement final : public Element {
                 Eigen::VectorXd& p) const override;
   using Element::result;
   void result(const ElementContext&, ElementResult& out) const override { out.clear(); }
+  // The mass whose weight it puts on its node (0 when it does not weigh).
+  double weighingMass() const { return weighs_ ? mass_ : 0.0; }
 
  private:
   double mass_;
