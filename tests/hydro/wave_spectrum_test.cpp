@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "libhydro/waves/sea.hpp"
+#include "libhydro/waves/wave_synthesis.hpp"
 
 namespace flexmoor::hydro {
 namespace {
@@ -50,7 +51,7 @@ TEST(WaveSynthesis, LongRecordReproducesHsAndTp) {
   SynthesisOptions o;
   o.seed = 20261201;
   Sea sea(Water{1025.0, depth, kG});
-  for (const WaveComponent& c : synthesise(j, o, depth, kG)) sea.addComponent(c);
+  for (const WaveComponent& c : synthesise(j, o, depth, kG).components) sea.addComponent(c);
   const double dt = 0.5;
   const int n = 43200, segment = 4096;
   std::vector<double> eta(n);
@@ -82,9 +83,10 @@ TEST(WaveSynthesis, SeedReproducesTheSeaBitForBit) {
   const WaveSpectrum j = WaveSpectrum::jonswap(3.0, 8.0, 2.0);
   SynthesisOptions o;
   o.seed = 7;
-  const auto a = synthesise(j, o, 100.0, kG), b = synthesise(j, o, 100.0, kG);
+  const auto a = synthesise(j, o, 100.0, kG).components;
+  const auto b = synthesise(j, o, 100.0, kG).components;
   o.seed = 8;
-  const auto c = synthesise(j, o, 100.0, kG);
+  const auto c = synthesise(j, o, 100.0, kG).components;
   ASSERT_EQ(a.size(), 200u);
   int differing = 0;
   for (size_t i = 0; i < a.size(); ++i) {
