@@ -128,6 +128,14 @@ bool readSpreading(CaseBuilder& b, const YAML::Node& n, const std::string& path,
   return true;
 }
 
+std::string discretisationName(
+    const std::vector<std::pair<std::string, hydro::Discretisation>>& names,
+    hydro::Discretisation d) {
+  for (const auto& [name, value] : names)
+    if (value == d) return name;
+  return "";
+}
+
 // The harmonics m of d omega = 2 pi / T inside [lo, hi] (as wave_synthesis.cpp takes them).
 long gridCount(double period, double lo, double hi) {
   const double dw = 2.0 * kPi / period;
@@ -227,12 +235,13 @@ void readSpectralSea(CaseBuilder& b, Fields& f, HydroSpec& h) {
   hydro::SynthesisOptions& o = spec.options;
   const auto spectrum = readSpectrum(b, *f.find("spectrum"), f.path("spectrum"), h.water.gravity);
   bool ok = spectrum.has_value();
+  const std::vector<std::pair<std::string, hydro::Discretisation>> discretisations = {
+      {"equal", hydro::Discretisation::Equal},
+      {"random_bins", hydro::Discretisation::RandomBins},
+      {"equal_energy", hydro::Discretisation::EqualEnergy}};
   if (const YAML::Node* d = f.find("discretisation")) {
-    const auto choice = b.in.choice<hydro::Discretisation>(
-        *d, f.path("discretisation"),
-        {{"equal", hydro::Discretisation::Equal},
-         {"random_bins", hydro::Discretisation::RandomBins},
-         {"equal_energy", hydro::Discretisation::EqualEnergy}});
+    const auto choice =
+        b.in.choice<hydro::Discretisation>(*d, f.path("discretisation"), discretisations);
     ok = ok && choice;
     o.discretisation = choice.value_or(o.discretisation);
   }
@@ -246,10 +255,11 @@ void readSpectralSea(CaseBuilder& b, Fields& f, HydroSpec& h) {
   if (period) {
     if (o.discretisation != hydro::Discretisation::Equal || components) {
       b.diag.error(*period, f.path("repeat_period") +
-                                (components ? ": give either components or repeat_period, not both"
-                                            : ": only for discretisation: equal (got no "
-                                              "discretisation: equal, expected an FFT grid to "
-                                              "repeat)"));
+                                (components
+                                     ? ": give either components or repeat_period, not both"
+                                     : ": only for an FFT grid (got discretisation: " +
+                                           discretisationName(discretisations, o.discretisation) +
+                                           ", expected discretisation: equal, which repeats)"));
       ok = false;
     } else {
       const auto t = b.in.quantity(*period, f.path("repeat_period"), kind::kTime, Limit::Positive);
