@@ -209,5 +209,23 @@ TEST(CaseReaderSea, NetcdfRecordsTheSeedAndRepeatPeriod) {
   EXPECT_NEAR(period, 50.0 * 8.0 / 3.5, 1e-12);
 }
 
+// The issue's example syntax reads, and a time step that does not resolve the sea's shortest
+// component (the band's top, 4 wp: 2.5 s at Tp 10 s) is warned of with that period.
+TEST(CaseReaderSea, WarnsOfATimeStepTooLongForTheBand) {
+  const Case c = readCase(test::writeCase("sea-dt.yaml", caseWith(R"(waves:
+  spectrum: {type: jonswap, Hs: 6 m, Tp: 10 s, gamma: 3.3}
+  components: 200
+  discretisation: equal
+  seed: 7
+  heading: 0 deg
+  spreading: {s: 10, directions: 9}
+  band: [0.5, 4.0]
+  kinematics_above_mean: wheeler
+)", "  - static: {name: s}\n  - dynamic: {name: d, dt: 0.5 s, steps: 4}\n")));
+  EXPECT_EQ(c.sea->components().size(), 1800u);
+  EXPECT_TRUE(test::anyContains(c.warnings, "the period 2.5 s of the sea's shortest component"))
+      << test::joined(c.warnings);
+}
+
 }  // namespace
 }  // namespace flexmoor::app
