@@ -34,10 +34,11 @@ std::shared_ptr<const hydro::Sea> makeSea(const HydroSpec& h, SeaOrigin& origin)
   std::vector<hydro::WaveComponent> components;
   origin.kind = "regular";
   for (const WaveSpec& w : h.waves)
-    components.push_back(
-        hydro::WaveComponent::fromHeightAndPeriod(w.height, w.period, w.heading, w.phase, depth, g));
+    components.push_back(hydro::WaveComponent::fromHeightAndPeriod(w.height, w.period, w.heading,
+                                                                   w.phase, depth, g));
   if (h.spectral) {
-    hydro::SynthesisedSea s = hydro::synthesise(h.spectral->spectrum, h.spectral->options, depth, g);
+    hydro::SynthesisedSea s =
+        hydro::synthesise(h.spectral->spectrum, h.spectral->options, depth, g);
     components = std::move(s.components);
     origin = {"spectrum", discretisationName(h.spectral->options.discretisation),
               h.spectral->options.seed, s.repeat_period, 0};

@@ -291,9 +291,9 @@ std::vector<Forcing> periodicForcing(const CaseBuilder& b) {
                         "the sea's shortest component (the top of waves.band, line " +
                             std::to_string(s->line) + ")"});
   if (const auto& m = b.hydro.measured)
-    periodic.push_back({two_pi / std::min(m->omega_cutoff, std::acos(-1.0) / m->record.dt),
-                        "the record's shortest component (waves.measured, line " +
-                            std::to_string(m->line) + ")"});
+    periodic.push_back(
+        {two_pi / std::min(m->omega_cutoff, std::acos(-1.0) / m->record.dt),
+         "the record's shortest component (waves.measured, line " + std::to_string(m->line) + ")"});
   return periodic;
 }
 

@@ -22,8 +22,8 @@ std::optional<std::vector<std::pair<double, double>>> readIncreasingRows(CaseBui
   const std::string pair = std::string("[") + first.name + ", " + second.name + "]";
   const std::vector<YAML::Node> rows = listItems(b.diag, n, path);
   if (rows.empty()) {
-    b.diag.error(n, path + ": no samples (got " + describeNode(n) + ", expected [" + pair +
-                        ", ...])");
+    b.diag.error(n,
+                 path + ": no samples (got " + describeNode(n) + ", expected [" + pair + ", ...])");
     return std::nullopt;
   }
   std::vector<std::pair<double, double>> samples;
@@ -40,8 +40,8 @@ std::optional<std::vector<std::pair<double, double>>> readIncreasingRows(CaseBui
     if (!samples.empty() && !(*a > samples.back().first)) {
       b.diag.error(rows[i][0], childPath(row, first.name) + ": not increasing (got " +
                                    formatNumber(*a) + " after " +
-                                   formatNumber(samples.back().first) + ", expected " +
-                                   first.name + " increasing strictly from row to row)");
+                                   formatNumber(samples.back().first) + ", expected " + first.name +
+                                   " increasing strictly from row to row)");
       return std::nullopt;
     }
     samples.emplace_back(*a, *v);

@@ -80,7 +80,8 @@ std::optional<hydro::WaveFront> readFront(CaseBuilder& b, const YAML::Node& n,
   Fields f(b.diag, n, path, {"start", "speed", "ramp"});
   hydro::WaveFront front;
   const auto start = requiredQuantity(b, f, "start", kind::kLength, Limit::Any);
-  const auto ramp = optionalQuantity(b, f, "ramp", kind::kNumber, Limit::NonNegative, front.ramp_periods);
+  const auto ramp =
+      optionalQuantity(b, f, "ramp", kind::kNumber, Limit::NonNegative, front.ramp_periods);
   std::optional<hydro::WaveFront::Speed> speed = front.speed;
   if (const YAML::Node* s = f.find("speed"))
     speed = b.in.choice<hydro::WaveFront::Speed>(
@@ -105,7 +106,8 @@ void readComponents(CaseBuilder& b, const YAML::Node& n, const std::string& path
 // [kinematics_above_mean], [front] and [ramp_up].
 void readWaves(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
   if (!n.IsMap()) return readComponents(b, n, "waves", h);
-  const bool spectral = static_cast<bool>(n["spectrum"]), measured = static_cast<bool>(n["measured"]);
+  const bool spectral = static_cast<bool>(n["spectrum"]),
+             measured = static_cast<bool>(n["measured"]);
   std::vector<std::string> keys = {"kinematics_above_mean", "front", "ramp_up"};
   if (spectral) keys.insert(keys.end(), spectralSeaKeys().begin(), spectralSeaKeys().end());
   if (measured) keys.push_back("measured");
@@ -149,7 +151,9 @@ std::optional<hydro::CurrentProfile> readCurrent(CaseBuilder& b, const YAML::Nod
   const auto heading = optionalQuantity(b, f, "heading", kind::kNumber, Limit::Any, 0.0);
   if (profile == "table") {
     const YAML::Node* t = f.require("table");
-    const auto samples = t ? readIncreasingRows(b, *t, f.path("table"), {"z", kind::kLength}, {"U", kind::kVelocity}) : std::nullopt;
+    const auto samples =
+        t ? readIncreasingRows(b, *t, f.path("table"), {"z", kind::kLength}, {"U", kind::kVelocity})
+          : std::nullopt;
     if (!samples || !heading) return std::nullopt;
     return hydro::CurrentProfile::table(*samples, *heading);
   }
@@ -159,7 +163,8 @@ std::optional<hydro::CurrentProfile> readCurrent(CaseBuilder& b, const YAML::Nod
     return hydro::CurrentProfile::uniform(*speed, *heading);
   }
   const auto exponent = optionalQuantity(b, f, "exponent", kind::kNumber, Limit::Positive, 7.0);
-  const auto depth = optionalQuantity(b, f, "reference_depth", kind::kLength, Limit::Positive, water.depth);
+  const auto depth =
+      optionalQuantity(b, f, "reference_depth", kind::kLength, Limit::Positive, water.depth);
   if (!speed || !heading || !exponent || !depth) return std::nullopt;
   return hydro::CurrentProfile::powerLaw(*speed, *exponent, *depth, *heading);
 }
@@ -213,12 +218,13 @@ void readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
            {"stiffness", "damping", "friction", "slip_speed", "slope", "grid"});
   const hydro::SeabedProperties si;
   const auto k = optionalQuantity(b, f, "stiffness", kind::kBedStiffness, Limit::NonNegative,
-                          fromSi(b, si.stiffness, kind::kBedStiffness));
+                                  fromSi(b, si.stiffness, kind::kBedStiffness));
   const auto c = optionalQuantity(b, f, "damping", kind::kBedDamping, Limit::NonNegative,
-                          fromSi(b, si.damping, kind::kBedDamping));
-  const auto mu = optionalQuantity(b, f, "friction", kind::kNumber, Limit::NonNegative, si.friction);
+                                  fromSi(b, si.damping, kind::kBedDamping));
+  const auto mu =
+      optionalQuantity(b, f, "friction", kind::kNumber, Limit::NonNegative, si.friction);
   const auto slip = optionalQuantity(b, f, "slip_speed", kind::kVelocity, Limit::Positive,
-                             fromSi(b, si.slip_speed, kind::kVelocity));
+                                     fromSi(b, si.slip_speed, kind::kVelocity));
   const YAML::Node* slope = f.find("slope");
   const YAML::Node* grid = f.find("grid");
   if (slope && grid) {

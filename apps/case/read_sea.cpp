@@ -28,12 +28,13 @@ double steepnessLimit(double tp) {
 std::optional<hydro::WaveSpectrum> readSpectrumTable(CaseBuilder& b, Fields& f) {
   const YAML::Node* of = f.require("of");
   const YAML::Node* t = f.require("table");
-  const auto hertz =
-      of ? b.in.choice<bool>(*of, f.path("of"), {{"frequency", true}, {"circular_frequency", false}})
-         : std::nullopt;
+  const auto hertz = of ? b.in.choice<bool>(*of, f.path("of"),
+                                            {{"frequency", true}, {"circular_frequency", false}})
+                        : std::nullopt;
   if (!hertz || !t) return std::nullopt;
-  const auto rows = readIncreasingRows(b, *t, f.path("table"), {*hertz ? "f" : "omega", kind::kFrequency},
-                                       {"S", kind::kSpectralDensity});
+  const auto rows =
+      readIncreasingRows(b, *t, f.path("table"), {*hertz ? "f" : "omega", kind::kFrequency},
+                         {"S", kind::kSpectralDensity});
   if (!rows) return std::nullopt;
   bool positive = false;
   for (size_t i = 0; i < rows->size(); ++i) {
@@ -74,8 +75,9 @@ std::optional<hydro::WaveSpectrum> readSpectrum(CaseBuilder& b, const YAML::Node
   if (*kind == Table) return readSpectrumTable(b, f);
   const auto hs = requiredQuantity(b, f, "Hs", kind::kLength, Limit::Positive);
   const auto tp = requiredQuantity(b, f, "Tp", kind::kTime, Limit::Positive);
-  auto gamma = *kind == Jonswap ? optionalQuantity(b, f, "gamma", kind::kNumber, Limit::Positive, 3.3)
-                                : std::optional<double>(1.0);
+  auto gamma = *kind == Jonswap
+                   ? optionalQuantity(b, f, "gamma", kind::kNumber, Limit::Positive, 3.3)
+                   : std::optional<double>(1.0);
   if (gamma && *gamma < 1.0) {
     b.diag.error(*f.find("gamma"), f.path("gamma") + ": below 1 (got " + formatNumber(*gamma) +
                                        ", expected gamma >= 1: 1 is Pierson-Moskowitz, 3.3 the "
@@ -85,12 +87,13 @@ std::optional<hydro::WaveSpectrum> readSpectrum(CaseBuilder& b, const YAML::Node
   if (!hs || !tp || !gamma) return std::nullopt;
   const double steepness = 2.0 * kPi * *hs / (g * *tp * *tp), limit = steepnessLimit(*tp);
   if (steepness > limit) {
-    b.diag.error(*f.find("Hs"), f.path("Hs") + ": the sea state is too steep to exist (got 2 pi "
-                                               "Hs / (g Tp^2) = " +
-                                    formatNumber(steepness) + ", expected at most " +
-                                    formatNumber(limit) +
-                                    ", DNV-RP-C205's limit of the average steepness at Tp = " +
-                                    formatNumber(*tp) + " s)");
+    b.diag.error(*f.find("Hs"),
+                 f.path("Hs") +
+                     ": the sea state is too steep to exist (got 2 pi "
+                     "Hs / (g Tp^2) = " +
+                     formatNumber(steepness) + ", expected at most " + formatNumber(limit) +
+                     ", DNV-RP-C205's limit of the average steepness at Tp = " + formatNumber(*tp) +
+                     " s)");
     return std::nullopt;
   }
   return hydro::WaveSpectrum::jonswap(*hs, *tp, *gamma);
@@ -156,8 +159,10 @@ std::optional<std::vector<std::pair<double, double>>> readRecordFile(CaseBuilder
   if (file.is_relative()) file = fs::path(b.c.file).parent_path() / file;
   std::ifstream in(file);
   if (!in) {
-    b.diag.error(n, path + ": cannot read the record (got '" + *name + "', expected a CSV file of t, "
-                           "eta, relative to the case file's folder: " + file.string() + ")");
+    b.diag.error(n, path + ": cannot read the record (got '" + *name +
+                        "', expected a CSV file of t, "
+                        "eta, relative to the case file's folder: " +
+                        file.string() + ")");
     return std::nullopt;
   }
   std::vector<std::pair<double, double>> rows;
@@ -195,9 +200,9 @@ std::optional<std::vector<std::pair<double, double>>> readRecordFile(CaseBuilder
 
 // The record from its rows: 4 samples or more, evenly spaced (the FFT's grid): every t_i within
 // 1e-6 dt of t_0 + i dt, dt = (t_last - t_0) / (n - 1).
-std::optional<hydro::ElevationRecord> evenRecord(CaseBuilder& b, const YAML::Node& at,
-                                                 const std::string& path,
-                                                 const std::vector<std::pair<double, double>>& rows) {
+std::optional<hydro::ElevationRecord> evenRecord(
+    CaseBuilder& b, const YAML::Node& at, const std::string& path,
+    const std::vector<std::pair<double, double>>& rows) {
   if (rows.size() < 4) {
     b.diag.error(at, path + ": too short a record (got " + std::to_string(rows.size()) +
                          " samples, expected 4 or more)");
@@ -209,8 +214,8 @@ std::optional<hydro::ElevationRecord> evenRecord(CaseBuilder& b, const YAML::Nod
   for (size_t i = 0; i < rows.size(); ++i) {
     const double expected = r.start + i * r.dt;
     if (std::abs(rows[i].first - expected) > 1e-6 * r.dt) {
-      b.diag.error(at, path + ": not evenly sampled at sample " + std::to_string(i + 1) + " (got t = " +
-                           formatNumber(rows[i].first) + ", expected t0 + i dt = " +
+      b.diag.error(at, path + ": not evenly sampled at sample " + std::to_string(i + 1) +
+                           " (got t = " + formatNumber(rows[i].first) + ", expected t0 + i dt = " +
                            formatNumber(expected) + " with dt = " + formatNumber(r.dt) +
                            ": the FFT needs one sampling interval)");
       return std::nullopt;
@@ -223,8 +228,8 @@ std::optional<hydro::ElevationRecord> evenRecord(CaseBuilder& b, const YAML::Nod
 }  // namespace
 
 const std::vector<std::string>& spectralSeaKeys() {
-  static const std::vector<std::string> keys = {"spectrum", "components",    "discretisation",
-                                                "repeat_period", "seed",     "heading",
+  static const std::vector<std::string> keys = {"spectrum",      "components", "discretisation",
+                                                "repeat_period", "seed",       "heading",
                                                 "spreading",     "band"};
   return keys;
 }
@@ -254,12 +259,12 @@ void readSpectralSea(CaseBuilder& b, Fields& f, HydroSpec& h) {
   }
   if (period) {
     if (o.discretisation != hydro::Discretisation::Equal || components) {
-      b.diag.error(*period, f.path("repeat_period") +
-                                (components
-                                     ? ": give either components or repeat_period, not both"
-                                     : ": only for an FFT grid (got discretisation: " +
-                                           discretisationName(discretisations, o.discretisation) +
-                                           ", expected discretisation: equal, which repeats)"));
+      b.diag.error(*period,
+                   f.path("repeat_period") +
+                       (components ? ": give either components or repeat_period, not both"
+                                   : ": only for an FFT grid (got discretisation: " +
+                                         discretisationName(discretisations, o.discretisation) +
+                                         ", expected discretisation: equal, which repeats)"));
       ok = false;
     } else {
       const auto t = b.in.quantity(*period, f.path("repeat_period"), kind::kTime, Limit::Positive);
@@ -323,13 +328,15 @@ void readMeasuredSea(CaseBuilder& b, const YAML::Node& n, const std::string& pat
                        : std::nullopt;
     const auto y = x ? b.in.quantity((*at)[1], f.path("at") + ".y", kind::kLength) : std::nullopt;
     if (!at->IsSequence() || at->size() != 2)
-      b.diag.error(*at, f.path("at") + ": expected [x, y], the gauge's position, two lengths (got " +
+      b.diag.error(*at, f.path("at") +
+                            ": expected [x, y], the gauge's position, two lengths (got " +
                             describeNode(*at) + ")");
     gauge_ok = x && y;
     if (gauge_ok) gauge = Eigen::Vector2d(*x, *y);
   }
   if (!rows || !heading || !cutoff || !gauge_ok) return;
-  const auto record = evenRecord(b, table ? *table : *file, table ? f.path("table") : f.path("file"), *rows);
+  const auto record =
+      evenRecord(b, table ? *table : *file, table ? f.path("table") : f.path("file"), *rows);
   if (!record) return;
   double mean = 0.0, largest = 0.0;
   for (double e : record->elevation) {

@@ -74,7 +74,8 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
     file_.putAttribute(NC_GLOBAL, "sea_components", sea.components);
     if (!sea.discretisation.empty())
       file_.putAttribute(NC_GLOBAL, "sea_discretisation", sea.discretisation);
-    if (sea.seed) file_.putAttribute(NC_GLOBAL, "sea_seed", static_cast<int>(*sea.seed));  // <= INT_MAX
+    if (sea.seed)
+      file_.putAttribute(NC_GLOBAL, "sea_seed", static_cast<int>(*sea.seed));  // <= INT_MAX
     // In the case's time unit (s in both systems); absent when the sea does not repeat.
     if (sea.repeat_period > 0.0)
       file_.putAttribute(NC_GLOBAL, "sea_repeat_period", sea.repeat_period);

@@ -40,8 +40,9 @@ double SpectralEstimate::peakFrequency(int smoothing) const {
 SpectralEstimate welch(const std::vector<double>& record, double dt, int segment) {
   const int n = static_cast<int>(record.size());
   if (segment < 4 || segment % 2 != 0 || segment > n || !(dt > 0.0))
-    throw std::invalid_argument("welch: needs an even segment of 4 samples or more within the "
-                                "record, and dt > 0");
+    throw std::invalid_argument(
+        "welch: needs an even segment of 4 samples or more within the "
+        "record, and dt > 0");
   std::vector<double> window(segment);
   double window_power = 0.0;
   for (int j = 0; j < segment; ++j) {

@@ -16,8 +16,8 @@
 namespace flexmoor::hydro {
 
 struct ElevationRecord {
-  double start = 0.0;  // t0
-  double dt = 0.0;     // sampling interval, > 0
+  double start = 0.0;             // t0
+  double dt = 0.0;                // sampling interval, > 0
   std::vector<double> elevation;  // n >= 2 samples
 };
 

@@ -16,8 +16,8 @@
 
 #include "libhydro/water/current_profile.hpp"
 #include "libhydro/water/water.hpp"
-#include "libhydro/waves/wave_component.hpp"
 #include "libhydro/waves/time_ramp.hpp"
+#include "libhydro/waves/wave_component.hpp"
 #include "libhydro/waves/wave_front.hpp"
 
 namespace flexmoor::hydro {

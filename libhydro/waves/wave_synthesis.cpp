@@ -52,8 +52,8 @@ std::vector<Frequency> equalEnergyBins(const WaveSpectrum& s, double lo, double 
   std::vector<Frequency> out;
   for (int i = 0; i < n; ++i) {
     const double m0 = s.moment(0, edges[i], edges[i + 1]);
-    const double centroid = m0 > 0.0 ? s.moment(1, edges[i], edges[i + 1]) / m0
-                                     : 0.5 * (edges[i] + edges[i + 1]);
+    const double centroid =
+        m0 > 0.0 ? s.moment(1, edges[i], edges[i + 1]) / m0 : 0.5 * (edges[i] + edges[i + 1]);
     out.push_back({centroid, amplitude});
   }
   return out;

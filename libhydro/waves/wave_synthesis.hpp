@@ -37,9 +37,9 @@ struct SynthesisOptions {
   // Equal only: the repeat period T of the FFT grid (d omega = 2 pi / T; the components are the
   // grid's frequencies in the band, `components` is not used); 0 to take d omega from components.
   double repeat_period = 0.0;
-  double heading = 0.0;                     // mean direction of travel, rad
-  std::optional<double> spreading_s;        // cos-2s exponent s; none: long-crested
-  int directions = 1;                       // directions of the spreading
+  double heading = 0.0;               // mean direction of travel, rad
+  std::optional<double> spreading_s;  // cos-2s exponent s; none: long-crested
+  int directions = 1;                 // directions of the spreading
 };
 
 struct SynthesisedSea {
@@ -48,8 +48,7 @@ struct SynthesisedSea {
   double repeat_period = 0.0;  // Equal: T = 2 pi / d omega; 0: the sea does not repeat
 };
 
-SynthesisedSea synthesise(const WaveSpectrum& s, const SynthesisOptions& o, double depth,
-                          double g);
+SynthesisedSea synthesise(const WaveSpectrum& s, const SynthesisOptions& o, double depth, double g);
 
 // The frequencies bounding the EqualEnergy bins of the band [lo, hi] (n + 1 of them, lo and hi
 // at the ends), each bin holding m0(lo, hi) / n: bisection to 1e-13 relative on the spectrum's

@@ -42,9 +42,9 @@ void SeaAtPoint(benchmark::State& state) {
       benchmark::DoNotOptimize(sea.at(x, t));
     }
   }
-  state.counters["ns_per_component"] = benchmark::Counter(
-      static_cast<double>(state.iterations()) * components,
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_component"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * components,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["n"] = components;
 }
 BENCHMARK(SeaAtPoint)

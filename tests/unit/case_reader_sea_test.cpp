@@ -23,7 +23,8 @@ namespace {
 const double kPi = std::acos(-1.0);
 
 // A 10 m cable 20 m down in 100 m of water; the waves: section appended.
-std::string caseWith(const std::string& waves, const std::string& steps = "  - static: {name: s}\n") {
+std::string caseWith(const std::string& waves,
+                     const std::string& steps = "  - static: {name: s}\n") {
   return R"(units: SI
 materials:
   steel: {type: linear_elastic, E: 2.0e11 Pa}
@@ -37,7 +38,8 @@ supports:
   - {node: cable.end, fix: [x, y, z], displacement: [0.01 m, 0, 0]}
   - {nodes: cable, fix: [y]}
 water: {density: 1025 kg/m^3, depth: 100 m}
-)" + waves + "steps:\n" + steps;
+)" + waves +
+         "steps:\n" + steps;
 }
 
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -158,7 +160,8 @@ TEST(CaseReaderSea, MeasuredRecordFromTableOrFile) {
   }
   for (const std::string& source : {"table: " + table, std::string("file: gauge.csv")}) {
     const std::string path = (dir / "measured.yaml").string();
-    std::ofstream(path) << caseWith("waves:\n  measured: {" + source + ", at: [5 m, 0], heading: 0 deg}\n");
+    std::ofstream(path) << caseWith("waves:\n  measured: {" + source +
+                                    ", at: [5 m, 0], heading: 0 deg}\n");
     const Case c = readCase(path);
     ASSERT_TRUE(c.sea_origin) << source;
     EXPECT_EQ(c.sea_origin->kind, "measured");
@@ -174,7 +177,8 @@ TEST(CaseReaderSea, MeasuredRecordFromTableOrFile) {
 // of the unramped sea at 15 s (to 1e-15), all of it after 25 s.
 TEST(CaseReaderSea, RampUpRampsARegularWave) {
   const auto read = [](const std::string& ramp) {
-    return readCase(test::writeCase("sea-ramp.yaml", caseWith("waves:\n  components: [{height: 2 m, period: 8 s}]\n" + ramp)));
+    return readCase(test::writeCase(
+        "sea-ramp.yaml", caseWith("waves:\n  components: [{height: 2 m, period: 8 s}]\n" + ramp)));
   };
   const Case ramped = read("  ramp_up: {duration: 20 s, start: 5 s}\n"), plain = read("");
   const Eigen::Vector3d x(1.0, 0.0, 0.0);
@@ -188,13 +192,16 @@ TEST(CaseReaderSea, RampUpRampsARegularWave) {
 TEST(CaseReaderSea, NetcdfRecordsTheSeedAndRepeatPeriod) {
   const auto dir = test::scratch("sea-netcdf");
   const std::string path = (dir / "sea.yaml").string();
-  std::ofstream(path) << caseWith(R"(waves:
+  std::ofstream(path) << caseWith(
+      R"(waves:
   spectrum: {type: jonswap, Hs: 2 m, Tp: 8 s}
   components: 50
   discretisation: equal
   seed: 77
-)", "  - static: {name: s}\n  - dynamic: {name: d, dt: 0.05 s, steps: 4}\n");
-  const auto r = test::flexmoor("run " + path + " -o " + (dir / "out").string() + " --no-vtk --no-figure");
+)",
+      "  - static: {name: s}\n  - dynamic: {name: d, dt: 0.05 s, steps: 4}\n");
+  const auto r =
+      test::flexmoor("run " + path + " -o " + (dir / "out").string() + " --no-vtk --no-figure");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   int file = -1, seed = 0, components = 0;
   double period = 0.0;
@@ -212,7 +219,9 @@ TEST(CaseReaderSea, NetcdfRecordsTheSeedAndRepeatPeriod) {
 // The issue's example syntax reads, and a time step that does not resolve the sea's shortest
 // component (the band's top, 4 wp: 2.5 s at Tp 10 s) is warned of with that period.
 TEST(CaseReaderSea, WarnsOfATimeStepTooLongForTheBand) {
-  const Case c = readCase(test::writeCase("sea-dt.yaml", caseWith(R"(waves:
+  const Case c = readCase(test::writeCase(
+      "sea-dt.yaml",
+      caseWith(R"(waves:
   spectrum: {type: jonswap, Hs: 6 m, Tp: 10 s, gamma: 3.3}
   components: 200
   discretisation: equal
@@ -221,7 +230,8 @@ TEST(CaseReaderSea, WarnsOfATimeStepTooLongForTheBand) {
   spreading: {s: 10, directions: 9}
   band: [0.5, 4.0]
   kinematics_above_mean: wheeler
-)", "  - static: {name: s}\n  - dynamic: {name: d, dt: 0.5 s, steps: 4}\n")));
+)",
+               "  - static: {name: s}\n  - dynamic: {name: d, dt: 0.5 s, steps: 4}\n")));
   EXPECT_EQ(c.sea->components().size(), 1800u);
   EXPECT_TRUE(test::anyContains(c.warnings, "the period 2.5 s of the sea's shortest component"))
       << test::joined(c.warnings);
