@@ -53,7 +53,15 @@ std::optional<hydro::WaveSpectrum> readSpectrumTable(CaseBuilder& b, Fields& f) 
                          ", expected 2 rows or more and some S > 0)");
     return std::nullopt;
   }
-  return *hertz ? hydro::WaveSpectrum::tablePerHertz(*rows) : hydro::WaveSpectrum::table(*rows);
+  const hydro::WaveSpectrum spectrum =
+      *hertz ? hydro::WaveSpectrum::tablePerHertz(*rows) : hydro::WaveSpectrum::table(*rows);
+  if (!(spectrum.peakFrequency() > 0.0)) {
+    b.diag.error(*t, f.path("table") + ": the largest S is at zero frequency (got S(0) = " +
+                         formatNumber(rows->front().second) +
+                         ", expected a peak at a frequency > 0: the band is in ratios of it)");
+    return std::nullopt;
+  }
+  return spectrum;
 }
 
 // spectrum: {type: jonswap, Hs, Tp, [gamma: 3.3]} | {type: pierson_moskowitz, Hs, Tp} |
@@ -293,12 +301,19 @@ void readSpectralSea(CaseBuilder& b, Fields& f, HydroSpec& h) {
   if (!band && std::isfinite(spectrum->support().second))
     band = std::pair{spectrum->support().first / wp, spectrum->support().second / wp};
   if (band) std::tie(o.omega_min_ratio, o.omega_max_ratio) = *band;
-  if (o.repeat_period > 0.0 &&
-      gridCount(o.repeat_period, o.omega_min_ratio * wp, o.omega_max_ratio * wp) < 1) {
-    b.diag.error(*period, f.path("repeat_period") + ": no frequency of the grid in the band (got " +
-                              formatNumber(o.repeat_period) + " s, expected at least 2 pi / (" +
-                              formatNumber((o.omega_max_ratio - o.omega_min_ratio) * wp) +
-                              " rad/s), the band's width)");
+  const long grid = o.repeat_period > 0.0
+                        ? gridCount(o.repeat_period, o.omega_min_ratio * wp, o.omega_max_ratio * wp)
+                        : 1;
+  if (grid < 1 || grid > 100000) {
+    const double width = (o.omega_max_ratio - o.omega_min_ratio) * wp;
+    b.diag.error(*period, f.path("repeat_period") +
+                              (grid < 1 ? ": no frequency of the grid in the band (got "
+                                        : ": too many components (got ") +
+                              formatNumber(o.repeat_period) + " s, " + std::to_string(grid) +
+                              " frequencies, expected 1 to 100000: T between 2 pi / " +
+                              formatNumber(width) +
+                              " rad/s (the band's width) and 100000 times "
+                              "that)");
     return;
   }
   spec.spectrum = *spectrum;
