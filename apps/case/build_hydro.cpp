@@ -72,6 +72,8 @@ std::vector<const LineHydroSpec*> elementHydro(const CaseBuilder& b) {
 
 void addMorisonLoads(CaseBuilder& b, const std::shared_ptr<const hydro::Sea>& sea,
                      const std::vector<const LineHydroSpec*>& hydro) {
+  const std::optional<double>& reuse = b.hydro.kinematics_reuse;
+  const auto held = reuse ? std::make_shared<const hydro::HeldKinematics>(sea, *reuse) : nullptr;
   for (const model::LengthMeasure measure :
        {model::LengthMeasure::Current, model::LengthMeasure::Reference}) {
     std::vector<std::optional<hydro::MorisonCoefficients>> sections(hydro.size());
@@ -81,9 +83,10 @@ void addMorisonLoads(CaseBuilder& b, const std::shared_ptr<const hydro::Sea>& se
         sections[e] = hydro[e]->coefficients;
         any = true;
       }
-    if (any)
-      b.model.addLineLoad(
-          std::make_shared<hydro::MorisonLineLoad>(sea, std::move(sections), measure));
+    if (!any) continue;
+    auto load = std::make_shared<hydro::MorisonLineLoad>(sea, std::move(sections), measure);
+    if (held) load->holdKinematics(held);
+    b.model.addLineLoad(load);
   }
 }
 

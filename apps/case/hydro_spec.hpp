@@ -79,6 +79,9 @@ struct HydroSpec {
   std::optional<SpectralSeaSpec> spectral;
   std::optional<MeasuredSeaSpec> measured;
   std::optional<hydro::TimeRamp> ramp;  // `waves: ramp_up:`
+  // `waves: kinematics_reuse: R`: the Morison loads hold the flow at a point over a time step's
+  // iterations within R of it (held_kinematics.hpp); none: Sea::at at every call.
+  std::optional<double> kinematics_reuse;
   hydro::SurfaceKinematics surface = hydro::SurfaceKinematics::Wheeler;
   std::optional<hydro::WaveFront> front;
   std::optional<hydro::CurrentProfile> current;

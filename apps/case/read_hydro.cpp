@@ -103,12 +103,12 @@ void readComponents(CaseBuilder& b, const YAML::Node& n, const std::string& path
 
 // waves: a list of regular components, or a map of them {components, ...}, of a spectrum
 // {spectrum, ...} or of a record {measured, ...} (read_sea.cpp), each with
-// [kinematics_above_mean], [front] and [ramp_up].
+// [kinematics_above_mean], [front], [ramp_up] and [kinematics_reuse].
 void readWaves(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
   if (!n.IsMap()) return readComponents(b, n, "waves", h);
   const bool spectral = static_cast<bool>(n["spectrum"]),
              measured = static_cast<bool>(n["measured"]);
-  std::vector<std::string> keys = {"kinematics_above_mean", "front", "ramp_up"};
+  std::vector<std::string> keys = {"kinematics_above_mean", "front", "ramp_up", "kinematics_reuse"};
   if (spectral) keys.insert(keys.end(), spectralSeaKeys().begin(), spectralSeaKeys().end());
   if (measured) keys.push_back("measured");
   if (!spectral && !measured) keys.push_back("components");
@@ -131,6 +131,9 @@ void readWaves(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
                     .value_or(h.surface);
   if (const YAML::Node* front = f.find("front")) h.front = readFront(b, *front, f.path("front"));
   if (const YAML::Node* r = f.find("ramp_up")) h.ramp = readRamp(b, *r, f.path("ramp_up"));
+  if (const YAML::Node* r = f.find("kinematics_reuse"))
+    h.kinematics_reuse =
+        b.in.quantity(*r, f.path("kinematics_reuse"), kind::kLength, Limit::Positive);
 }
 
 // current: {[profile: uniform | power_law | table], speed | table, [heading: 0], power law:
