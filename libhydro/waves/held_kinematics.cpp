@@ -4,6 +4,11 @@
 #include <utility>
 
 namespace flexmoor::hydro {
+namespace {
+
+constexpr size_t kMaxHeld = 64;  // points held per key
+
+}  // namespace
 
 HeldKinematics::HeldKinematics(std::shared_ptr<const Sea> sea, double radius)
     : sea_(std::move(sea)), radius_(radius) {
@@ -44,6 +49,9 @@ FluidPoint HeldKinematics::at(int key, const Eigen::Vector3d& x, double t,
   }
   ++counts_.evaluations;
   const FluidPoint f = sea_->at(x, t, gradient);
+  // A group holds a few points (an element's integration points); one that keeps missing (a
+  // static solve at one time, moving its points far) starts afresh rather than growing.
+  if (group.size() >= kMaxHeld) group.clear();
   group.push_back({x, f, gradient});
   return f;
 }

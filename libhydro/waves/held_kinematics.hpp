@@ -7,8 +7,8 @@
 // centimetres, so a time step's iterations cost one evaluation a point instead of one each; the
 // error is of order (k dx)^2 of the component of wave number k (measured in docs/performance.md).
 // A new t forgets what was held. Points are grouped by a key (the element), so that a lookup
-// scans only its group. Safe to share between threads (a lock), though one model evaluates its
-// loads on one thread.
+// scans only its group (at most 64 points; a fuller group starts afresh). Safe to share between
+// threads (a lock), though one model evaluates its loads on one thread.
 #include <Eigen/Core>
 #include <memory>
 #include <mutex>

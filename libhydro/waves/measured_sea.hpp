@@ -1,7 +1,8 @@
 #pragma once
 // A measured elevation record eta(t_j) at one point, t_j = t0 + j dt (j = 0 .. n - 1), as the sea:
 // its discrete Fourier transform X_k (FFTW, signal/fft.hpp) read as components
-//   eta(t) = mean + sum_{k=1}^{n/2} a_k cos(omega_k (t - t0) + arg X_k),  omega_k = 2 pi k / (n dt),
+//   eta(t) = mean + sum_{k=1}^{n/2} a_k cos(omega_k (t - t0) + arg X_k),
+//   omega_k = 2 pi k / (n dt),
 //   a_k = 2 |X_k| / n (|X_{n/2}| / n for the Nyquist term of an even n),
 // each a linear wave travelling along `heading` with k from the dispersion relation, phased so
 // that at the gauge (x0, y0) the sum is the record: phi_k = omega_k t0 - arg X_k -

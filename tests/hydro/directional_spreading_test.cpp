@@ -1,7 +1,8 @@
 // cos-2s directional spreading (libhydro/waves/directional_spreading.hpp): the function's
-// normalisation and circular moments against their closed forms (int D = 1, r1 = s / (s + 1),
-// r2 = s (s - 1) / ((s + 1) (s + 2)), mean direction beta0, spread sqrt(2 / (s + 1))), by Simpson
-// in 20,000 steps over the circle (tolerance 1e-12; measured 9e-14 at worst); and its discretisation's moments against the same closed forms.
+// normalisation and circular moments against their closed forms (int D = 1, r1 = s / (s + 1), r2 =
+// s (s - 1) / ((s + 1) (s + 2)), mean direction beta0, spread sqrt(2 / (s + 1))), by Simpson in
+// 20,000 steps over the circle (tolerance 1e-12; measured 9e-14 at worst); and its discretisation's
+// moments against the same closed forms.
 #include "libhydro/waves/directional_spreading.hpp"
 
 #include <gtest/gtest.h>

@@ -159,10 +159,11 @@ TEST(IrregularSea, SeedGivesTheSameSeaToTheLastBit) {
   }
 }
 
-// The equal grid: every frequency a whole multiple of 2 pi / T (to 1e-12 relative), the
-// elevation at t + T that at t (to 2e-13 of Hs, measured 6e-14: round-off in phases of up to
-// omega T ~ 4,000 rad), and the inverse-FFT record at 1,024 samples of T the sum of cosines
-// (Sea::elevation) at every sample to 2e-13 of Hs (measured 3e-14), at the origin and 40 m off it, short-crested (5 directions).
+// The equal grid: every frequency a whole multiple of 2 pi / T (to 1e-12 relative), the elevation
+// at t + T that at t (to 2e-13 of Hs, measured 6e-14: round-off in phases of up to omega T ~ 4,000
+// rad), and the inverse-FFT record at 1,024 samples of T the sum of cosines (Sea::elevation) at
+// every sample to 2e-13 of Hs (measured 3e-14), at the origin and 40 m off it, short-crested (5
+// directions).
 TEST(IrregularSea, EqualGridRepeatsAndItsFftRecordIsTheSumOfCosines) {
   const double hs = 3.0;
   const WaveSpectrum s = WaveSpectrum::jonswap(hs, 8.0, 2.0);

@@ -32,10 +32,10 @@ ElevationRecord syntheticRecord(int n, double dt, double start) {
   return r;
 }
 
-// Reference: the record itself. At its samples the reconstructed Sea's elevation is the record
-// less its mean to 2e-13 of its largest |eta| (measured 5.5e-14: n / 2 cosines of round-off
-// each ~1e-16, phases up to omega t ~ 1e3 rad), for n even (1,000) and odd (999), t0 = 12.5 s, at the origin and at a
-// gauge 35 m along and 10 m across the heading 20 deg; the mean is given back apart (1e-14).
+// Reference: the record itself. At its samples the reconstructed Sea's elevation is the record less
+// its mean to 2e-13 of its largest |eta| (measured 5.5e-14: n / 2 cosines of round-off each ~1e-16,
+// phases up to omega t ~ 1e3 rad), for n even (1,000) and odd (999), t0 = 12.5 s, at the origin and
+// at a gauge 35 m along and 10 m across the heading 20 deg; the mean is given back apart (1e-14).
 TEST(MeasuredSea, ComponentsReproduceTheRecordAtItsSamples) {
   for (const int n : {1000, 999}) {
     const ElevationRecord r = syntheticRecord(n, 0.4, 12.5);

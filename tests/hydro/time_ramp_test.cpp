@@ -45,11 +45,11 @@ TEST(TimeRamp, IsAHalfCosineInTime) {
   EXPECT_NEAR(q.value, 0.5 * (1.0 - std::cos(kPi / 4.0)), 1e-15);
 }
 
-// The ramped sea: elevation and kinematics zero (wet points at the mean level's water) before
-// the start; during the ramp eta is E(t) times the unramped eta (1e-15 relative), and the
-// acceleration is the time derivative of the velocity by central differences in t (h = 1e-4 s:
-// truncation ~ (omega h)^2 / 6 ~ 1e-9, round-off 1e-16 / h ~ 1e-12, of a omega^2; tolerance 1e-8
-// of it, measured 1.4e-9); after it every field equals the unramped sea's to the bit (E = 1, dE/dt = 0 exactly).
+// The ramped sea: elevation and kinematics zero (wet points at the mean level's water) before the
+// start; during the ramp eta is E(t) times the unramped eta (1e-15 relative), and the acceleration
+// is the time derivative of the velocity by central differences in t (h = 1e-4 s: truncation ~
+// (omega h)^2 / 6 ~ 1e-9, round-off 1e-16 / h ~ 1e-12, of a omega^2; tolerance 1e-8 of it, measured
+// 1.4e-9); after it every field equals the unramped sea's to the bit (E = 1, dE/dt = 0 exactly).
 TEST(TimeRamp, RampsTheSeaAndKeepsAccelerationTheRateOfVelocity) {
   for (const double depth : {30.0, std::numeric_limits<double>::infinity()}) {
     Sea plain = regularSea(depth), ramped = regularSea(depth);
@@ -91,7 +91,7 @@ TEST(TimeRamp, MultipliesAFrontsEnvelope) {
   EXPECT_DOUBLE_EQ(p.rate, 0.05 * 0.6 + 0.3 * 0.1);
   EXPECT_DOUBLE_EQ(p.slope, -0.02 * 0.6);
   EXPECT_DOUBLE_EQ(p.rate_slope, 0.004 * 0.6 + -0.02 * 0.1);
-  // On a sea: the front at the group speed from x = -40 m, a 2-period ramp; the time ramp over 30 s.
+  // On a sea: the front at the group speed from x = -40 m, a 2-period ramp; the time ramp 30 s.
   Sea sea = regularSea(50.0);
   sea.setFront({-40.0, WaveFront::Speed::Group, 2.0});
   sea.setRamp({0.0, 30.0});
