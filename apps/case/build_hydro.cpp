@@ -15,12 +15,45 @@
 namespace flexmoor::app {
 namespace {
 
-std::shared_ptr<const hydro::Sea> makeSea(const HydroSpec& h) {
+const char* discretisationName(hydro::Discretisation d) {
+  switch (d) {
+    case hydro::Discretisation::Equal:
+      return "equal";
+    case hydro::Discretisation::RandomBins:
+      return "random_bins";
+    case hydro::Discretisation::EqualEnergy:
+      return "equal_energy";
+  }
+  return "";
+}
+
+// The sea's components (regular, from a spectrum or from a record) and how they were made.
+std::shared_ptr<const hydro::Sea> makeSea(const HydroSpec& h, SeaOrigin& origin) {
   auto sea = std::make_shared<hydro::Sea>(h.water);
+  const double depth = h.water.depth, g = h.water.gravity;
+  std::vector<hydro::WaveComponent> components;
+  origin.kind = "regular";
   for (const WaveSpec& w : h.waves)
-    sea->addComponent(hydro::WaveComponent::fromHeightAndPeriod(
-        w.height, w.period, w.heading, w.phase, h.water.depth, h.water.gravity));
+    components.push_back(hydro::WaveComponent::fromHeightAndPeriod(w.height, w.period, w.heading,
+                                                                   w.phase, depth, g));
+  if (h.spectral) {
+    hydro::SynthesisedSea s =
+        hydro::synthesise(h.spectral->spectrum, h.spectral->options, depth, g);
+    components = std::move(s.components);
+    origin = {"spectrum", discretisationName(h.spectral->options.discretisation),
+              h.spectral->options.seed, s.repeat_period, 0};
+  }
+  if (h.measured) {
+    const MeasuredSeaSpec& m = *h.measured;
+    hydro::ReconstructedSea s =
+        hydro::reconstruct(m.record, m.heading, m.gauge, m.omega_cutoff, depth, g);
+    components = std::move(s.components);
+    origin = {"measured", "", std::nullopt, s.repeat_period, 0};
+  }
+  origin.components = static_cast<int>(components.size());
+  for (const hydro::WaveComponent& c : components) sea->addComponent(c);
   if (h.front) sea->setFront(*h.front);
+  if (h.ramp) sea->setRamp(*h.ramp);
   if (h.current) sea->setCurrent(*h.current);
   sea->setSurfaceKinematics(h.surface);
   return sea;
@@ -39,6 +72,8 @@ std::vector<const LineHydroSpec*> elementHydro(const CaseBuilder& b) {
 
 void addMorisonLoads(CaseBuilder& b, const std::shared_ptr<const hydro::Sea>& sea,
                      const std::vector<const LineHydroSpec*>& hydro) {
+  const std::optional<double>& reuse = b.hydro.kinematics_reuse;
+  const auto held = reuse ? std::make_shared<const hydro::HeldKinematics>(sea, *reuse) : nullptr;
   for (const model::LengthMeasure measure :
        {model::LengthMeasure::Current, model::LengthMeasure::Reference}) {
     std::vector<std::optional<hydro::MorisonCoefficients>> sections(hydro.size());
@@ -48,9 +83,10 @@ void addMorisonLoads(CaseBuilder& b, const std::shared_ptr<const hydro::Sea>& se
         sections[e] = hydro[e]->coefficients;
         any = true;
       }
-    if (any)
-      b.model.addLineLoad(
-          std::make_shared<hydro::MorisonLineLoad>(sea, std::move(sections), measure));
+    if (!any) continue;
+    auto load = std::make_shared<hydro::MorisonLineLoad>(sea, std::move(sections), measure);
+    if (held) load->holdKinematics(held);
+    b.model.addLineLoad(load);
   }
 }
 
@@ -59,8 +95,10 @@ void addMorisonLoads(CaseBuilder& b, const std::shared_ptr<const hydro::Sea>& se
 void buildOcean(CaseBuilder& b) {
   const HydroSpec& h = b.hydro;
   if (!h.has_water) return;
-  const std::shared_ptr<const hydro::Sea> sea = makeSea(h);
+  SeaOrigin origin;
+  const std::shared_ptr<const hydro::Sea> sea = makeSea(h, origin);
   b.c.sea = sea;
+  b.c.sea_origin = origin;
   const std::vector<const LineHydroSpec*> hydro = elementHydro(b);
   addMorisonLoads(b, sea, hydro);
   for (const BodySpec& body : h.bodies)

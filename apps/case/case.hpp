@@ -1,6 +1,7 @@
 #pragma once
 // A case as read from its YAML file: the model it builds, the analysis steps to run in order, and
 // the summary quantities it declares. Everything is in the case's consistent unit system.
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <memory>
@@ -108,6 +109,16 @@ struct FigureSpec {
   SourceLocation where;
 };
 
+// How the sea's components were made (build_hydro.cpp), for the results' metadata (the netCDF
+// global attributes sea_kind, sea_components, sea_discretisation, sea_seed, sea_repeat_period).
+struct SeaOrigin {
+  std::string kind;              // "regular", "spectrum" or "measured"
+  std::string discretisation;    // a spectrum's: "equal", "random_bins" or "equal_energy"
+  std::optional<uint64_t> seed;  // a spectrum's
+  double repeat_period = 0.0;    // the equal grid's or the record's period; 0: no repeat
+  int components = 0;
+};
+
 struct Case {
   std::string name;   // `name:` in the file, or the file's stem
   std::string title;  // optional one-line description
@@ -123,6 +134,7 @@ struct Case {
   std::map<std::string, std::vector<int>> element_sets;  // named groups (surfaces, lines), 0-based
   // The water (`water:`, with its waves and current) whose loads act on the model; null for none.
   std::shared_ptr<const hydro::Sea> sea;
+  std::optional<SeaOrigin> sea_origin;  // with the sea
   // "FILE:LINE: warning: ..." for what runs but perhaps not as meant (readCase prints them).
   std::vector<std::string> warnings;
 };

@@ -3,6 +3,7 @@
 // `water:`, `waves:`, `current:`, `seabed:`, `bodies:`, a section's `hydro:` and
 // `loads: wave_pressure:`. build_hydro.cpp
 // turns them into a hydro::Sea and the loads that put it on the model.
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,8 +15,11 @@
 #include "libhydro/seabed/seabed_contact.hpp"
 #include "libhydro/water/current_profile.hpp"
 #include "libhydro/water/water.hpp"
+#include "libhydro/waves/measured_sea.hpp"
 #include "libhydro/waves/sea.hpp"
+#include "libhydro/waves/time_ramp.hpp"
 #include "libhydro/waves/wave_front.hpp"
+#include "libhydro/waves/wave_synthesis.hpp"
 #include "libstruct/model/load_point.hpp"
 
 namespace flexmoor::app {
@@ -32,6 +36,23 @@ struct LineHydroSpec {
 struct WaveSpec {
   double height = 0.0, period = 0.0, heading = 0.0, phase = 0.0;
   int line = 0;
+};
+
+// `waves: {spectrum: ...}`: an irregular sea from a spectrum (angles in rad, the band in ratios
+// of the peak frequency).
+struct SpectralSeaSpec {
+  hydro::WaveSpectrum spectrum;
+  hydro::SynthesisOptions options;
+  int line = 0;  // of `spectrum:`
+};
+
+// `waves: {measured: ...}`: a recorded elevation at a gauge as the sea.
+struct MeasuredSeaSpec {
+  hydro::ElevationRecord record;
+  double heading = 0.0;
+  Eigen::Vector2d gauge = Eigen::Vector2d::Zero();
+  double omega_cutoff = std::numeric_limits<double>::infinity();
+  int line = 0;  // of `measured:`
 };
 
 // One item of `bodies:`; its mass, if it gives one, is a point_mass element at the node.
@@ -54,7 +75,13 @@ struct HydroSpec {
   bool has_water = false;  // `water:` given: nothing else of the ocean applies without it
   int water_line = 0;
   hydro::Water water;
-  std::vector<WaveSpec> waves;
+  std::vector<WaveSpec> waves;  // regular components
+  std::optional<SpectralSeaSpec> spectral;
+  std::optional<MeasuredSeaSpec> measured;
+  std::optional<hydro::TimeRamp> ramp;  // `waves: ramp_up:`
+  // `waves: kinematics_reuse: R`: the Morison loads hold the flow at a point over a time step's
+  // iterations within R of it (held_kinematics.hpp); none: Sea::at at every call.
+  std::optional<double> kinematics_reuse;
   hydro::SurfaceKinematics surface = hydro::SurfaceKinematics::Wheeler;
   std::optional<hydro::WaveFront> front;
   std::optional<hydro::CurrentProfile> current;

@@ -283,6 +283,17 @@ std::vector<Forcing> periodicForcing(const CaseBuilder& b) {
   for (size_t i = 0; i < b.hydro.waves.size(); ++i)
     periodic.push_back({b.hydro.waves[i].period, "wave " + std::to_string(i + 1) + " (line " +
                                                      std::to_string(b.hydro.waves[i].line) + ")"});
+  // An irregular sea's shortest component: the top of a spectrum's band, a record's cutoff or
+  // its Nyquist frequency.
+  const double two_pi = 2.0 * std::acos(-1.0);
+  if (const auto& s = b.hydro.spectral)
+    periodic.push_back({two_pi / (s->options.omega_max_ratio * s->spectrum.peakFrequency()),
+                        "the sea's shortest component (the top of waves.band, line " +
+                            std::to_string(s->line) + ")"});
+  if (const auto& m = b.hydro.measured)
+    periodic.push_back(
+        {two_pi / std::min(m->omega_cutoff, std::acos(-1.0) / m->record.dt),
+         "the record's shortest component (waves.measured, line " + std::to_string(m->line) + ")"});
   return periodic;
 }
 

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/read_fields.hpp"
+#include "apps/case/read_sea.hpp"
 #include "libhydro/waves/dispersion.hpp"
 #include "libstruct/element/spring_element.hpp"
 
@@ -21,20 +23,6 @@ double fromSi(CaseBuilder& b, double value, const QuantityKind& kind) {
 
 std::string lengthUnit(const CaseBuilder& b) { return unitNames(b.c.units).length; }
 
-// A required quantity: nullopt when it is absent (reported) or wrong.
-std::optional<double> required(CaseBuilder& b, Fields& f, const std::string& key,
-                               const QuantityKind& kind, Limit limit) {
-  const YAML::Node* n = f.require(key);
-  return n ? b.in.quantity(*n, f.path(key), kind, limit) : std::nullopt;
-}
-
-// An optional quantity: its fallback when absent, nullopt when wrong.
-std::optional<double> optional(CaseBuilder& b, const Fields& f, const std::string& key,
-                               const QuantityKind& kind, Limit limit, double fallback) {
-  const YAML::Node* n = f.find(key);
-  return n ? b.in.quantity(*n, f.path(key), kind, limit) : std::optional<double>(fallback);
-}
-
 // Gravity for the water: the magnitude of `loads: gravity`, which must point down (-z, the sea's
 // z is up); standard gravity when the case gives none.
 std::optional<double> waterGravity(CaseBuilder& b, int line) {
@@ -51,8 +39,8 @@ std::optional<double> waterGravity(CaseBuilder& b, int line) {
 // water: {density, depth}; false when it has errors.
 bool readWater(CaseBuilder& b, const YAML::Node& n, int line, HydroSpec& h) {
   Fields f(b.diag, n, "water", {"density", "depth"});
-  const auto density = required(b, f, "density", kind::kDensity, Limit::Positive);
-  const auto depth = required(b, f, "depth", kind::kLength, Limit::Positive);
+  const auto density = requiredQuantity(b, f, "density", kind::kDensity, Limit::Positive);
+  const auto depth = requiredQuantity(b, f, "depth", kind::kLength, Limit::Positive);
   const auto g = waterGravity(b, line);
   if (!density || !depth || !g) return false;
   h.water = {*density, *depth, *g};
@@ -64,10 +52,10 @@ bool readWater(CaseBuilder& b, const YAML::Node& n, int line, HydroSpec& h) {
 std::optional<WaveSpec> readComponent(CaseBuilder& b, const YAML::Node& n, const std::string& path,
                                       const hydro::Water& water) {
   Fields f(b.diag, n, path, {"height", "period", "heading", "phase"});
-  const auto height = required(b, f, "height", kind::kLength, Limit::Positive);
-  const auto period = required(b, f, "period", kind::kTime, Limit::Positive);
-  const auto heading = optional(b, f, "heading", kind::kNumber, Limit::Any, 0.0);
-  const auto phase = optional(b, f, "phase", kind::kNumber, Limit::Any, 0.0);
+  const auto height = requiredQuantity(b, f, "height", kind::kLength, Limit::Positive);
+  const auto period = requiredQuantity(b, f, "period", kind::kTime, Limit::Positive);
+  const auto heading = optionalQuantity(b, f, "heading", kind::kNumber, Limit::Any, 0.0);
+  const auto phase = optionalQuantity(b, f, "phase", kind::kNumber, Limit::Any, 0.0);
   if (!height || !period || !heading || !phase) return std::nullopt;
   const double k = hydro::waveNumber(2.0 * kPi / *period, water.depth, water.gravity);
   const double length = 2.0 * kPi / k;
@@ -91,8 +79,9 @@ std::optional<hydro::WaveFront> readFront(CaseBuilder& b, const YAML::Node& n,
                                           const std::string& path) {
   Fields f(b.diag, n, path, {"start", "speed", "ramp"});
   hydro::WaveFront front;
-  const auto start = required(b, f, "start", kind::kLength, Limit::Any);
-  const auto ramp = optional(b, f, "ramp", kind::kNumber, Limit::NonNegative, front.ramp_periods);
+  const auto start = requiredQuantity(b, f, "start", kind::kLength, Limit::Any);
+  const auto ramp =
+      optionalQuantity(b, f, "ramp", kind::kNumber, Limit::NonNegative, front.ramp_periods);
   std::optional<hydro::WaveFront::Speed> speed = front.speed;
   if (const YAML::Node* s = f.find("speed"))
     speed = b.in.choice<hydro::WaveFront::Speed>(
@@ -112,11 +101,28 @@ void readComponents(CaseBuilder& b, const YAML::Node& n, const std::string& path
       h.waves.push_back(*wave);
 }
 
-// waves: a list of components, or {components, [kinematics_above_mean], [front]}.
+// waves: a list of regular components, or a map of them {components, ...}, of a spectrum
+// {spectrum, ...} or of a record {measured, ...} (read_sea.cpp), each with
+// [kinematics_above_mean], [front], [ramp_up] and [kinematics_reuse].
 void readWaves(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
   if (!n.IsMap()) return readComponents(b, n, "waves", h);
-  Fields f(b.diag, n, "waves", {"components", "kinematics_above_mean", "front"});
-  if (const YAML::Node* c = f.require("components")) readComponents(b, *c, f.path("components"), h);
+  const bool spectral = static_cast<bool>(n["spectrum"]),
+             measured = static_cast<bool>(n["measured"]);
+  std::vector<std::string> keys = {"kinematics_above_mean", "front", "ramp_up", "kinematics_reuse"};
+  if (spectral) keys.insert(keys.end(), spectralSeaKeys().begin(), spectralSeaKeys().end());
+  if (measured) keys.push_back("measured");
+  if (!spectral && !measured) keys.push_back("components");
+  Fields f(b.diag, n, "waves", keys);
+  if (spectral && measured) {
+    b.diag.error(f.keyLine("measured"),
+                 "waves: give either spectrum (a sea state) or measured (a record), not both");
+  } else if (spectral) {
+    readSpectralSea(b, f, h);
+  } else if (measured) {
+    readMeasuredSea(b, *f.find("measured"), f.path("measured"), h);
+  } else if (const YAML::Node* c = f.require("components")) {
+    readComponents(b, *c, f.path("components"), h);
+  }
   if (const YAML::Node* k = f.find("kinematics_above_mean"))
     h.surface = b.in.choice<hydro::SurfaceKinematics>(
                         *k, f.path("kinematics_above_mean"),
@@ -124,37 +130,10 @@ void readWaves(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
                          {"constant", hydro::SurfaceKinematics::ConstantAboveMean}})
                     .value_or(h.surface);
   if (const YAML::Node* front = f.find("front")) h.front = readFront(b, *front, f.path("front"));
-}
-
-// table: [[z, U], ...] in strictly increasing z.
-std::optional<std::vector<std::pair<double, double>>> readCurrentTable(CaseBuilder& b,
-                                                                       const YAML::Node& n,
-                                                                       const std::string& path) {
-  const std::vector<YAML::Node> rows = listItems(b.diag, n, path);
-  if (rows.empty()) {
-    b.diag.error(n, path + ": no samples (got " + describeNode(n) + ", expected [[z, U], ...])");
-    return std::nullopt;
-  }
-  std::vector<std::pair<double, double>> samples;
-  for (size_t i = 0; i < rows.size(); ++i) {
-    const std::string row = itemPath(path, i);
-    if (!rows[i].IsSequence() || rows[i].size() != 2) {
-      b.diag.error(rows[i], row + ": expected [z, U], a length and a velocity (got " +
-                                describeNode(rows[i]) + ")");
-      return std::nullopt;
-    }
-    const auto z = b.in.quantity(rows[i][0], childPath(row, "z"), kind::kLength);
-    const auto u = b.in.quantity(rows[i][1], childPath(row, "U"), kind::kVelocity);
-    if (!z || !u) return std::nullopt;
-    if (!samples.empty() && !(*z > samples.back().first)) {
-      b.diag.error(rows[i][0], childPath(row, "z") + ": not increasing (got " + formatNumber(*z) +
-                                   " after " + formatNumber(samples.back().first) +
-                                   ", expected z increasing strictly from row to row)");
-      return std::nullopt;
-    }
-    samples.emplace_back(*z, *u);
-  }
-  return samples;
+  if (const YAML::Node* r = f.find("ramp_up")) h.ramp = readRamp(b, *r, f.path("ramp_up"));
+  if (const YAML::Node* r = f.find("kinematics_reuse"))
+    h.kinematics_reuse =
+        b.in.quantity(*r, f.path("kinematics_reuse"), kind::kLength, Limit::Positive);
 }
 
 // current: {[profile: uniform | power_law | table], speed | table, [heading: 0], power law:
@@ -172,20 +151,23 @@ std::optional<hydro::CurrentProfile> readCurrent(CaseBuilder& b, const YAML::Nod
     b.in.choice<int>(*p, f.path("profile"), {{"uniform", 0}, {"power_law", 1}, {"table", 2}});
     return std::nullopt;
   }
-  const auto heading = optional(b, f, "heading", kind::kNumber, Limit::Any, 0.0);
+  const auto heading = optionalQuantity(b, f, "heading", kind::kNumber, Limit::Any, 0.0);
   if (profile == "table") {
     const YAML::Node* t = f.require("table");
-    const auto samples = t ? readCurrentTable(b, *t, f.path("table")) : std::nullopt;
+    const auto samples =
+        t ? readIncreasingRows(b, *t, f.path("table"), {"z", kind::kLength}, {"U", kind::kVelocity})
+          : std::nullopt;
     if (!samples || !heading) return std::nullopt;
     return hydro::CurrentProfile::table(*samples, *heading);
   }
-  const auto speed = required(b, f, "speed", kind::kVelocity, Limit::NonNegative);
+  const auto speed = requiredQuantity(b, f, "speed", kind::kVelocity, Limit::NonNegative);
   if (profile != "power_law") {
     if (!speed || !heading) return std::nullopt;
     return hydro::CurrentProfile::uniform(*speed, *heading);
   }
-  const auto exponent = optional(b, f, "exponent", kind::kNumber, Limit::Positive, 7.0);
-  const auto depth = optional(b, f, "reference_depth", kind::kLength, Limit::Positive, water.depth);
+  const auto exponent = optionalQuantity(b, f, "exponent", kind::kNumber, Limit::Positive, 7.0);
+  const auto depth =
+      optionalQuantity(b, f, "reference_depth", kind::kLength, Limit::Positive, water.depth);
   if (!speed || !heading || !exponent || !depth) return std::nullopt;
   return hydro::CurrentProfile::powerLaw(*speed, *exponent, *depth, *heading);
 }
@@ -194,10 +176,10 @@ std::optional<hydro::CurrentProfile> readCurrent(CaseBuilder& b, const YAML::Nod
 std::optional<hydro::Bathymetry> readGrid(CaseBuilder& b, const YAML::Node& n,
                                           const std::string& path) {
   Fields f(b.diag, n, path, {"x0", "dx", "y0", "dy", "z"});
-  const auto x0 = required(b, f, "x0", kind::kLength, Limit::Any);
-  const auto dx = required(b, f, "dx", kind::kLength, Limit::Positive);
-  const auto y0 = required(b, f, "y0", kind::kLength, Limit::Any);
-  const auto dy = required(b, f, "dy", kind::kLength, Limit::Positive);
+  const auto x0 = requiredQuantity(b, f, "x0", kind::kLength, Limit::Any);
+  const auto dx = requiredQuantity(b, f, "dx", kind::kLength, Limit::Positive);
+  const auto y0 = requiredQuantity(b, f, "y0", kind::kLength, Limit::Any);
+  const auto dy = requiredQuantity(b, f, "dy", kind::kLength, Limit::Positive);
   const YAML::Node* z = f.require("z");
   if (!z) return std::nullopt;
   const std::vector<YAML::Node> rows = listItems(b.diag, *z, f.path("z"));
@@ -238,13 +220,14 @@ void readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
   Fields f(b.diag, n, "seabed",
            {"stiffness", "damping", "friction", "slip_speed", "slope", "grid"});
   const hydro::SeabedProperties si;
-  const auto k = optional(b, f, "stiffness", kind::kBedStiffness, Limit::NonNegative,
-                          fromSi(b, si.stiffness, kind::kBedStiffness));
-  const auto c = optional(b, f, "damping", kind::kBedDamping, Limit::NonNegative,
-                          fromSi(b, si.damping, kind::kBedDamping));
-  const auto mu = optional(b, f, "friction", kind::kNumber, Limit::NonNegative, si.friction);
-  const auto slip = optional(b, f, "slip_speed", kind::kVelocity, Limit::Positive,
-                             fromSi(b, si.slip_speed, kind::kVelocity));
+  const auto k = optionalQuantity(b, f, "stiffness", kind::kBedStiffness, Limit::NonNegative,
+                                  fromSi(b, si.stiffness, kind::kBedStiffness));
+  const auto c = optionalQuantity(b, f, "damping", kind::kBedDamping, Limit::NonNegative,
+                                  fromSi(b, si.damping, kind::kBedDamping));
+  const auto mu =
+      optionalQuantity(b, f, "friction", kind::kNumber, Limit::NonNegative, si.friction);
+  const auto slip = optionalQuantity(b, f, "slip_speed", kind::kVelocity, Limit::Positive,
+                                     fromSi(b, si.slip_speed, kind::kVelocity));
   const YAML::Node* slope = f.find("slope");
   const YAML::Node* grid = f.find("grid");
   if (slope && grid) {
@@ -313,14 +296,14 @@ void readBody(CaseBuilder& b, const YAML::Node& item, const std::string& path, H
   const int node = n ? nodeRef(b, *n, f.path("node")).value_or(-1) : -1;
   std::optional<hydro::PointBody> body;
   if (sphere) {
-    const auto d = required(b, f, "diameter", kind::kLength, Limit::Positive);
-    const auto cd = required(b, f, "Cd", kind::kNumber, Limit::NonNegative);
-    const auto ca = optional(b, f, "Ca", kind::kNumber, Limit::NonNegative, 0.5);
+    const auto d = requiredQuantity(b, f, "diameter", kind::kLength, Limit::Positive);
+    const auto cd = requiredQuantity(b, f, "Cd", kind::kNumber, Limit::NonNegative);
+    const auto ca = optionalQuantity(b, f, "Ca", kind::kNumber, Limit::NonNegative, 0.5);
     if (d && cd && ca) body = hydro::PointBody::sphere(*d, *cd, *ca);
   } else {
-    const auto volume = required(b, f, "volume", kind::kVolume, Limit::Positive);
-    const auto area = optional(b, f, "drag_area", kind::kArea, Limit::NonNegative, 0.0);
-    const auto ca = optional(b, f, "Ca", kind::kNumber, Limit::NonNegative, 0.0);
+    const auto volume = requiredQuantity(b, f, "volume", kind::kVolume, Limit::Positive);
+    const auto area = optionalQuantity(b, f, "drag_area", kind::kArea, Limit::NonNegative, 0.0);
+    const auto ca = optionalQuantity(b, f, "Ca", kind::kNumber, Limit::NonNegative, 0.0);
     if (volume && area && ca) body = hydro::PointBody{*volume, *area, *ca, 0.0};
   }
   const auto mass = bodyMass(b, f, h.water.gravity);
@@ -354,11 +337,11 @@ std::optional<LineHydroSpec> readLineHydro(CaseBuilder& b, const YAML::Node& n,
   LineHydroSpec s;
   s.line = lineOf(n);
   hydro::MorisonCoefficients& c = s.coefficients;
-  const auto d = required(b, f, "diameter", kind::kLength, Limit::Positive);
-  const auto cn = required(b, f, "Cn", kind::kNumber, Limit::NonNegative);
-  const auto ca = required(b, f, "Ca", kind::kNumber, Limit::NonNegative);
-  const auto ct = optional(b, f, "Ct", kind::kNumber, Limit::NonNegative, 0.0);
-  const auto ca_axial = optional(b, f, "CaAx", kind::kNumber, Limit::NonNegative, 0.0);
+  const auto d = requiredQuantity(b, f, "diameter", kind::kLength, Limit::Positive);
+  const auto cn = requiredQuantity(b, f, "Cn", kind::kNumber, Limit::NonNegative);
+  const auto ca = requiredQuantity(b, f, "Ca", kind::kNumber, Limit::NonNegative);
+  const auto ct = optionalQuantity(b, f, "Ct", kind::kNumber, Limit::NonNegative, 0.0);
+  const auto ca_axial = optionalQuantity(b, f, "CaAx", kind::kNumber, Limit::NonNegative, 0.0);
   using Area = hydro::MorisonCoefficients::TangentialDragArea;
   std::optional<Area> area = Area::Perimeter;
   if (const YAML::Node* a = f.find("tangential_drag_area"))

@@ -46,6 +46,11 @@ inline constexpr QuantityKind kAcceleration{"an acceleration", {0, 1, -2}};
 inline constexpr QuantityKind kStiffness{"a force per length", {1, 0, -2}};
 inline constexpr QuantityKind kVolume{"a volume", {0, 3, 0}};
 inline constexpr QuantityKind kVelocity{"a velocity", {0, 1, -1}};
+// A frequency in hertz or a circular frequency in rad/s (rad is a plain number: the case says
+// which); a wave spectrum's density per hertz or per rad/s.
+inline constexpr QuantityKind kFrequency{"a frequency (like Hz or rad/s)", {0, 0, -1}};
+inline constexpr QuantityKind kSpectralDensity{"a spectral density (like m^2/Hz or m^2 s/rad)",
+                                               {0, 2, 1}};
 // A seabed's penalty stiffness and damping per projected area (MoorDyn's kBot and cBot).
 inline constexpr QuantityKind kBedStiffness{"a pressure per length (like Pa/m)", {1, -2, -2}};
 inline constexpr QuantityKind kBedDamping{"a pressure per velocity (like Pa s/m)", {1, -2, -1}};

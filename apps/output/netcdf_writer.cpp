@@ -68,6 +68,18 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
       utcNow() + ": flexmoor " + version + " run of " + (c.file.empty() ? c.name : c.file));
   file_.putAttribute(NC_GLOBAL, "case_name", c.name);
   file_.putAttribute(NC_GLOBAL, "unit_system", unitSystemName(c.units));
+  if (c.sea_origin) {
+    const SeaOrigin& sea = *c.sea_origin;
+    file_.putAttribute(NC_GLOBAL, "sea_kind", sea.kind);
+    file_.putAttribute(NC_GLOBAL, "sea_components", sea.components);
+    if (!sea.discretisation.empty())
+      file_.putAttribute(NC_GLOBAL, "sea_discretisation", sea.discretisation);
+    if (sea.seed)
+      file_.putAttribute(NC_GLOBAL, "sea_seed", static_cast<int>(*sea.seed));  // <= INT_MAX
+    // In the case's time unit (s in both systems); absent when the sea does not repeat.
+    if (sea.repeat_period > 0.0)
+      file_.putAttribute(NC_GLOBAL, "sea_repeat_period", sea.repeat_period);
+  }
 
   size_t element_nodes = 0;
   for (const auto& e : model.elements()) element_nodes += e->nodes().size();

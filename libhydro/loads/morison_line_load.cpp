@@ -18,8 +18,9 @@ model::PointForce MorisonLineLoad::evaluate(const model::LoadPoint& p, bool jaco
   if (p.element < 0 || p.element >= static_cast<int>(sections_.size()) || !sections_[p.element])
     return out;
   FluidGradient g;
-  const FluidPoint fluid =
-      jacobians ? sea_->at(p.position, p.time, g) : sea_->at(p.position, p.time);
+  const FluidPoint fluid = held_       ? held_->at(p.element, p.position, p.time, g)
+                           : jacobians ? sea_->at(p.position, p.time, g)
+                                       : sea_->at(p.position, p.time);
   if (!fluid.wet) return out;  // above the local surface: nothing (a line may pierce it)
   const MorisonCoefficients& c = *sections_[p.element];
   const Water& water = sea_->water();

@@ -8,9 +8,11 @@
 // (d f/d v . grad v + d f/d a . grad a).
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "libhydro/loads/morison.hpp"
+#include "libhydro/waves/held_kinematics.hpp"
 #include "libhydro/waves/sea.hpp"
 #include "libstruct/model/load_point.hpp"
 
@@ -24,12 +26,17 @@ class MorisonLineLoad final : public model::LineLoad {
   MorisonLineLoad(std::shared_ptr<const Sea> sea,
                   std::vector<std::optional<MorisonCoefficients>> sections,
                   model::LengthMeasure measure = model::LengthMeasure::Current);
+  // The flow taken from `held` (held_kinematics.hpp, over the same sea) instead of Sea::at at
+  // every call: one evaluation a point and time step, Taylor-expanded over its iterations.
+  void holdKinematics(std::shared_ptr<const HeldKinematics> held) { held_ = std::move(held); }
+  const HeldKinematics* heldKinematics() const { return held_.get(); }
 
   model::PointForce evaluate(const model::LoadPoint& p, bool jacobians) const override;
   model::LengthMeasure measure() const override { return measure_; }
 
  private:
   std::shared_ptr<const Sea> sea_;
+  std::shared_ptr<const HeldKinematics> held_;  // null: Sea::at at every call
   std::vector<std::optional<MorisonCoefficients>> sections_;
   model::LengthMeasure measure_;
 };

@@ -27,6 +27,7 @@ Envelope Sea::envelope(int c, const Eigen::Vector3d& x, double t) const {
 double Sea::phases(const Eigen::Vector3d& x, double t, std::vector<Phase>& out,
                    Eigen::Vector3d* elevation_gradient) const {
   out.resize(terms_.size());
+  const Envelope ramp = ramp_ ? rampEnvelope(*ramp_, t) : Envelope();
   double eta = 0.0;
   for (std::size_t i = 0; i < terms_.size(); ++i) {
     const ComponentTerms& c = terms_[i];
@@ -35,6 +36,7 @@ double Sea::phases(const Eigen::Vector3d& x, double t, std::vector<Phase>& out,
     p.cos_th = std::cos(th);
     p.sin_th = std::sin(th);
     p.envelope = envelope(static_cast<int>(i), x, t);
+    if (ramp_) p.envelope = product(p.envelope, ramp);
     const double e = p.envelope.value;
     eta += e * c.amplitude * p.cos_th;
     if (elevation_gradient) {

@@ -1,6 +1,7 @@
 #pragma once
 // The sea a structure sits in: still water, a list of linear wave components (a regular wave is
-// one; an irregular sea adds more), an optional wave-train front, a current, and the treatment of
+// one; an irregular sea adds more), an optional wave-train front, an optional ramp-up in time
+// (time_ramp.hpp; it multiplies the front's envelope), a current, and the treatment of
 // the kinematics above the mean level. It answers what the loads need at a point and time: the
 // surface elevation above it, whether the point is wet, the fluid velocity and local
 // acceleration, and the gauge pressure (hydrostatic plus dynamic), and on request their
@@ -15,6 +16,7 @@
 
 #include "libhydro/water/current_profile.hpp"
 #include "libhydro/water/water.hpp"
+#include "libhydro/waves/time_ramp.hpp"
 #include "libhydro/waves/wave_component.hpp"
 #include "libhydro/waves/wave_front.hpp"
 
@@ -51,6 +53,7 @@ class Sea {
 
   void addComponent(const WaveComponent& c);
   void setFront(const WaveFront& front);
+  void setRamp(const TimeRamp& ramp) { ramp_ = ramp; }
   void setCurrent(const CurrentProfile& current) { current_ = current; }
   void setSurfaceKinematics(SurfaceKinematics k) { surface_ = k; }
 
@@ -80,6 +83,7 @@ class Sea {
   std::vector<ComponentTerms> terms_;  // one per component
   std::optional<WaveFront> front_;
   std::vector<ComponentFront> fronts_;  // one per component when there is a front
+  std::optional<TimeRamp> ramp_;
   CurrentProfile current_ = CurrentProfile::none();
   SurfaceKinematics surface_ = SurfaceKinematics::Wheeler;
 };

@@ -1,14 +1,16 @@
 #pragma once
-// Sea-state spectra S(omega) (one-sided, m^2 s / rad) and their synthesis into linear wave
-// components with seeded random phases, so that an irregular sea is a Sea with many components.
+// Sea-state spectra S(omega) (one-sided, length^2 s / rad) and their moments
+// m_n = int omega^n S d omega:
 //   Pierson-Moskowitz: S = 5/16 Hs^2 wp^4 w^-5 exp(-5/4 (w / wp)^-4)
 //   JONSWAP: S_PM gamma^exp(-(w - wp)^2 / (2 sigma^2 wp^2)), sigma = 0.07 (w <= wp), 0.09 above,
 //            normalised numerically so that m0 = Hs^2 / 16 exactly (DNV's 1 - 0.287 ln gamma is an
 //            approximation of that factor).
-#include <cstdint>
+//   table: samples (omega_i, S_i) at increasing omega >= 0, linear between them, zero outside;
+//          its moments exact (a polynomial on each interval). A table of S(f) per hertz at f in
+//          hertz is S(omega) = S(f) / (2 pi) at omega = 2 pi f (the same m0).
+// The synthesis of a spectrum into components is wave_synthesis.hpp.
+#include <utility>
 #include <vector>
-
-#include "libhydro/waves/wave_component.hpp"
 
 namespace flexmoor::hydro {
 
@@ -16,31 +18,28 @@ class WaveSpectrum {
  public:
   static WaveSpectrum piersonMoskowitz(double hs, double tp);
   static WaveSpectrum jonswap(double hs, double tp, double gamma);
+  // (omega, S(omega)) or (f, S(f)) pairs: at least 2, omega >= 0 strictly increasing, S >= 0,
+  // some S > 0 (std::invalid_argument otherwise).
+  static WaveSpectrum table(const std::vector<std::pair<double, double>>& omega_density);
+  static WaveSpectrum tablePerHertz(const std::vector<std::pair<double, double>>& f_density);
 
   double density(double omega) const;  // S(omega)
+  // The peak: JONSWAP's and Pierson-Moskowitz's wp = 2 pi / Tp, a table's largest sample.
   double peakFrequency() const { return omega_p_; }
-  double significantHeight() const { return hs_; }
-  // Spectral moment m_n = int omega^n S d omega (numerical, to 1e-10 relative).
+  double significantHeight() const;  // 4 sqrt(m0)
+  // m_n over [0, inf): numerical to 1e-10 relative for the formulas, exact for a table.
   double moment(int n) const;
+  // m_n over [lo, hi] (0 <= lo <= hi): composite Simpson with steps of at most wp / 4000,
+  // split at wp (where JONSWAP's sigma changes), for the formulas; exact for a table.
+  double moment(int n, double lo, double hi) const;
+  // The frequency range a table covers; [0, inf) for the formulas.
+  std::pair<double, double> support() const;
 
  private:
   double shape(double omega) const;  // unnormalised
+  bool isTable() const { return !samples_.empty(); }
   double hs_ = 0.0, omega_p_ = 0.0, gamma_ = 1.0, scale_ = 1.0;
+  std::vector<std::pair<double, double>> samples_;  // a table's (omega, S)
 };
-
-struct SynthesisOptions {
-  int components = 200;
-  double omega_min_ratio = 0.5;  // band [ratio_min wp, ratio_max wp]
-  double omega_max_ratio = 4.0;
-  uint64_t seed = 1;
-  bool jitter = true;  // frequencies drawn uniformly within their bins (no exact repeat period)
-  double heading = 0.0;
-};
-
-// Components a_i cos(k_i x - w_i t + phi_i) with a_i = sqrt(2 S(w_i) dw), random phases from a
-// 64-bit Mersenne Twister with the given seed, taken bit by bit (not through a standard-library
-// distribution), so that a seed gives the same sea to the last bit on every platform.
-std::vector<WaveComponent> synthesise(const WaveSpectrum& s, const SynthesisOptions& o,
-                                      double depth, double g);
 
 }  // namespace flexmoor::hydro
