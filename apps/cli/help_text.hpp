@@ -66,7 +66,8 @@ runs its steps in order, each from the state the previous one left:
            BFGS (Eq. 5.1 convergence), or arc length through limit points (control: arc_length)
   modes    the lowest natural frequencies and mode shapes about the current, prestressed state
   dynamic  Newmark (Eq. 4.55-4.63) or HHT-alpha time steps with Newton iterations, on a
-           schedule of {dt, steps}; a step that fails is halved and retried; progress is logged
+           schedule of {dt, steps}; a Newton increment that raises the residual is halved
+           (backtracking), a step that fails is halved and retried; progress is logged
 )"
     // How loads and load factors pass from step to step (libstruct/solve, issue 9).
     R"(
