@@ -10,21 +10,13 @@
 #include <string>
 
 #include "tests/support/mooring_catenary.hpp"
+#include "tests/support/oc3_catenary_inputs.hpp"
 
 namespace flexmoor::hydro {
 namespace {
 
-// OC3-Hywind (ocean-cases.md): spans 848.67 m and 250 m, L = 902.2 m, w = 698.09 N/m,
-// EA = 384.243e6 N.
-CatenaryLineInputs oc3() {
-  CatenaryLineInputs in;
-  in.horizontal_span = 853.87 - 5.2;
-  in.vertical_span = 320.0 - 70.0;
-  in.unstretched_length = 902.2;
-  in.weight = 698.09;
-  in.axial_stiffness = 384.243e6;
-  return in;
-}
+// OC3-Hywind's line (tests/support/oc3_catenary_inputs.hpp).
+CatenaryLineInputs oc3() { return test::oc3CatenaryInputs(); }
 
 test::MooringLineSolution reference(const CatenaryLineInputs& in) {
   test::MooringLineInputs r;

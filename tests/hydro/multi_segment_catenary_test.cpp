@@ -14,20 +14,13 @@
 #include <string>
 
 #include "libhydro/mooring/catenary_line.hpp"
+#include "tests/support/oc3_catenary_inputs.hpp"
 
 namespace flexmoor::hydro {
 namespace {
 
-// OC3-Hywind's line (ocean-cases.md), as in catenary_line_test.cpp.
-CatenaryLineInputs oc3() {
-  CatenaryLineInputs in;
-  in.horizontal_span = 853.87 - 5.2;
-  in.vertical_span = 320.0 - 70.0;
-  in.unstretched_length = 902.2;
-  in.weight = 698.09;
-  in.axial_stiffness = 384.243e6;
-  return in;
-}
+// OC3-Hywind's line (tests/support/oc3_catenary_inputs.hpp).
+CatenaryLineInputs oc3() { return test::oc3CatenaryInputs(); }
 
 // The same line as segments of the given fractions of its length, no force at the connections.
 CatenaryLineInputs split(CatenaryLineInputs in, const std::vector<double>& fractions) {
