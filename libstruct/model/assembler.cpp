@@ -103,18 +103,16 @@ void Assembler::internalForce(const State& state, Eigen::VectorXd& force, Sparse
     if (K) scatterMatrix(slot_[e], k, *K);
   }
   memo.valid = true;
-  memo.displacement = state.displacement;
+  memo.state.displacement = state.displacement;
   memo.assembled = force;
 }
 
 bool Assembler::sameDisplacement(const ForceMemo& m, const State& s) {
-  return m.valid && m.displacement.cols() == s.displacement.cols() &&
-         m.displacement == s.displacement;
+  return m.valid && model::sameDisplacement(m.state, s);
 }
 
 bool Assembler::sameState(const ForceMemo& m, const State& s) {
-  return sameDisplacement(m, s) && m.time == s.time && m.load_factor == s.load_factor &&
-         m.velocity == s.velocity && m.acceleration == s.acceleration;
+  return m.valid && model::sameState(m.state, s);
 }
 
 void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load,
@@ -192,11 +190,7 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load, LoadMatr
     }
   }
   memo.valid = true;
-  memo.displacement = state.displacement;
-  memo.velocity = state.velocity;
-  memo.acceleration = state.acceleration;
-  memo.time = state.time;
-  memo.load_factor = state.load_factor;
+  memo.state = state;
   memo.assembled = load;
 }
 

@@ -114,8 +114,7 @@ class Assembler {
   // are equal, exactly.
   struct ForceMemo {
     bool valid = false;
-    NodalField displacement, velocity, acceleration;
-    double time = 0.0, load_factor = 0.0;
+    State state;  // internal: its displacement alone
     Eigen::VectorXd assembled;
     std::vector<Eigen::VectorXd> elements;
     bool per_element = true;  // external: false when no element has a load of its own

@@ -36,4 +36,16 @@ struct State {
         acceleration(NodalField::Zero(3, node_count)) {}
 };
 
+// Whether two states have the same displacements (exactly: what the internal force depends on).
+inline bool sameDisplacement(const State& a, const State& b) {
+  return a.displacement.cols() == b.displacement.cols() && a.displacement == b.displacement;
+}
+
+// Whether two states are the same for every force: displacement, velocity, acceleration, time and
+// load factor equal, exactly (the motion record aside).
+inline bool sameState(const State& a, const State& b) {
+  return sameDisplacement(a, b) && a.time == b.time && a.load_factor == b.load_factor &&
+         a.velocity == b.velocity && a.acceleration == b.acceleration;
+}
+
 }  // namespace flexmoor::model

@@ -81,7 +81,7 @@ class ArcLengthPath {
   // with R given, also returns the residual.
   bool tangentSolve(const model::State& state, VectorXd* R, VectorXd& P, VectorXd& dut) {
     model::SparseMatrix K;
-    const Residual r = outOfBalance(a_, state, &K);
+    const Residual r = staticOutOfBalance(a_, state, &K);
     residual_norm_ = r.relative();
     residual_floor_ = r.floor;
     if (!std::isfinite(residual_norm_)) return false;
@@ -92,7 +92,6 @@ class ArcLengthPath {
     a_.externalLoad(unit, full);
     P = a_.restrictToFree(full);
     if (o_.pressure_load_stiffness) a_.subtractLoadStiffness(state, K);
-    addMotionLoadStiffness(a_, state, K);
     if (!linear_.factorize(K)) return false;
     dut = linear_.solve(P);
     return dut.allFinite();

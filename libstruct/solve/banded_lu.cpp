@@ -29,8 +29,7 @@ bool bandIsNarrow(const model::SparseMatrix& A, const Band& band) {
   return flops <= std::max(4e6, 200.0 * A.nonZeros());
 }
 
-void BandedLu::analyzePattern(const model::SparseMatrix& A) {
-  const Band band = bandOf(A);
+void BandedLu::analyzePattern(const model::SparseMatrix& A, const Band& band) {
   n_ = static_cast<int>(A.rows());
   kl_ = band.lower;
   ku_ = band.upper;

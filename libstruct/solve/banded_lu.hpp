@@ -23,8 +23,8 @@ bool bandIsNarrow(const model::SparseMatrix& A, const Band& band);
 
 class BandedLu {
  public:
-  // Sets up the band storage for A's pattern (once per pattern).
-  void analyzePattern(const model::SparseMatrix& A);
+  // Sets up the band storage for A's pattern, whose band is `band` (bandOf(A)), once per pattern.
+  void analyzePattern(const model::SparseMatrix& A, const Band& band);
   // Whether A has the dimensions and number of nonzeros of the pattern analysed.
   bool fits(const model::SparseMatrix& A) const {
     return A.rows() == n_ && A.cols() == n_ &&

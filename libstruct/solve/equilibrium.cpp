@@ -24,12 +24,13 @@ Residual outOfBalance(const model::Assembler& assembler, const model::State& sta
   return r;
 }
 
-void addMotionLoadStiffness(const model::Assembler& assembler, const model::State& state,
-                            model::SparseMatrix& K) {
-  if (!assembler.model().hasMotionLoads()) return;
+Residual staticOutOfBalance(const model::Assembler& assembler, const model::State& state,
+                            model::SparseMatrix* K) {
+  if (!K || !assembler.model().hasMotionLoads()) return outOfBalance(assembler, state, K);
   model::LoadMatrices J;
-  assembler.loadMatrices(state, J);
-  K.coeffs() += J.stiffness.coeffs();
+  const Residual r = outOfBalance(assembler, state, K, &J);
+  K->coeffs() += J.stiffness.coeffs();
+  return r;
 }
 
 bool converged(const Convergence& c, double displacement_norm, double residual_norm,

@@ -22,12 +22,13 @@ struct Residual {
 Residual outOfBalance(const model::Assembler& assembler, const model::State& state,
                       model::SparseMatrix* K, model::LoadMatrices* J = nullptr);
 
-// The static tangent's share of the motion-dependent loads (load_point.hpp): their stiffness
-// -dP/du at the state added to K (on the assembler's pattern); nothing for a model without them.
-// A static or relaxation solve needs it where such a load is all that holds a dof (a line lying on
-// the seabed, a buoy on its buoyancy). It makes the tangent non-symmetric: solve with LU.
-void addMotionLoadStiffness(const model::Assembler& assembler, const model::State& state,
-                            model::SparseMatrix& K);
+// outOfBalance for a static or relaxation solve: with K, the static tangent, K_T plus the
+// motion-dependent loads' stiffness -dP/du (load_point.hpp), from the same evaluation of the
+// loads (nothing added for a model without them). Such a solve needs it where a load of that kind
+// is all that holds a dof (a line lying on the seabed, a buoy on its buoyancy). It makes the
+// tangent non-symmetric: solve with LU. The round-off floor is that of K_T.
+Residual staticOutOfBalance(const model::Assembler& assembler, const model::State& state,
+                            model::SparseMatrix* K);
 
 // A round-off floor above this means the coordinates have run away (a mechanism under load
 // pushed to 1e10 m makes the floor 5): the residual test then still asks for this much, so such a

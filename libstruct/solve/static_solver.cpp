@@ -88,7 +88,7 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
     for (int it = 0; it <= options.max_iterations; ++it) {
       const bool update = options.flavour == NewtonFlavour::Full || it == 0 ||
                           it % std::max(1, options.stiffness_update) == 0;
-      const Residual R = outOfBalance(assembler, state, update ? &K : nullptr);
+      const Residual R = staticOutOfBalance(assembler, state, update ? &K : nullptr);
       rec.residual_norm = R.relative();
       trace.residual(rec.residual_norm);
       if (update) floor = R.floor;
@@ -105,7 +105,6 @@ StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
       if (update) {
         ++updates;
         if (options.pressure_load_stiffness) assembler.subtractLoadStiffness(state, K);
-        addMotionLoadStiffness(assembler, state, K);
         if (!factorizeRegularised(linear, K, log, regularised)) {
           state = converged_state;
           throw ConvergenceError(

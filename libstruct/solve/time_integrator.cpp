@@ -64,13 +64,6 @@ Residual TimeIntegrator::balance(const model::State& x, bool tangent, bool loads
   return R;
 }
 
-bool TimeIntegrator::keptFor(const model::State& s) const {
-  const model::State& k = kept_.state;
-  return kept_.valid && k.time == s.time && k.load_factor == s.load_factor &&
-         k.displacement.cols() == s.displacement.cols() && k.displacement == s.displacement &&
-         k.velocity == s.velocity && k.acceleration == s.acceleration;
-}
-
 // Effective tangent (Eq. 4.63): (1 + alpha) (K_T + K_d + K_L) + gamma / (beta h) (1 + alpha)
 // (C + C_d + C_L) + a0 (M + (1 + alpha) M_L), with C = a_M M + a_K K0, the internal damping's
 // dF_d/du = K_d and dF_d/du' = C_d, and the motion loads' stiffness K_L, damping C_L and added
@@ -133,7 +126,7 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   const bool refresh_each_step = tangent_iterates ||
                                  steps_since_update_ + 1 >= std::max(1, o_.stiffness_update) ||
                                  h != factor_h_;
-  const bool kept = keptFor(s);
+  const bool kept = kept_.valid && model::sameState(kept_.state, s);
   const bool tangent_missing = refresh_each_step && !(kept && kept_.tangent);
   const bool loads_missing = motion_loads_ && !(kept && kept_.loads);
   VectorXd previous_balance;  // HHT: P_n - F_n - F_d,n - C v_n

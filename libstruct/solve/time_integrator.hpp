@@ -74,8 +74,6 @@ class TimeIntegrator {
   // (outOfBalance); from the same sweep, the tangent K_ and the internal damping's viscous_ when
   // `tangent`, the motion loads' loads_ when `loads`.
   Residual balance(const model::State& x, bool tangent, bool loads);
-  // Whether kept_ belongs to s.
-  bool keptFor(const model::State& s) const;
   void factorEffectiveTangent(double h);
   model::MotionRecord record(const model::State& s) const;
 

@@ -21,12 +21,11 @@ bool relaxationStep(const model::Assembler& assembler, model::State& state,
   model::SparseMatrix K;
   trace.start();
   for (int it = 0; it < o.max_iterations; ++it) {
-    Residual R = outOfBalance(assembler, state, &K);
+    Residual R = staticOutOfBalance(assembler, state, &K);
     trace.residual(R.relative());
     if (K.rows() > 0) stiffness = K.diagonal().cwiseAbs().mean();
     const Eigen::VectorXd velocity =
         assembler.restrictToFree(asVector(state.displacement) - asVector(previous));
-    addMotionLoadStiffness(assembler, state, K);
     R.free -= C * velocity;     // D u' with D = C I (Eq. C.11)
     K.diagonal().array() += C;  // Eq. C.10
     if (!linear.factorize(K)) return false;

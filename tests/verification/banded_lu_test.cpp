@@ -48,7 +48,7 @@ TEST(BandedLu, SolvesLikeADenseLu) {
     EXPECT_LE(band.lower, c.kl);
     EXPECT_LE(band.upper, c.ku);
     solve::BandedLu lu;
-    lu.analyzePattern(A);
+    lu.analyzePattern(A, solve::bandOf(A));
     ASSERT_TRUE(lu.factorize(A));
     const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(c.n, -1.0, 2.0);
     const Eigen::VectorXd x = lu.solve(b);
@@ -62,7 +62,7 @@ TEST(BandedLu, SolvesLikeADenseLu) {
 TEST(BandedLu, RefactorisesNewValuesOnItsPattern) {
   model::SparseMatrix A = bandMatrix(40, 5, 5, 3.0, true, 3u);
   solve::BandedLu lu;
-  lu.analyzePattern(A);
+  lu.analyzePattern(A, solve::bandOf(A));
   ASSERT_TRUE(lu.factorize(A));
   A.coeffs() *= -2.5;
   ASSERT_TRUE(lu.factorize(A));
@@ -78,7 +78,7 @@ TEST(BandedLu, ExactlySingularIsRefused) {
     for (model::SparseMatrix::InnerIterator it(A, k); it; ++it)
       if (it.row() == 6 || it.col() == 6) it.valueRef() = 0.0;
   solve::BandedLu lu;
-  lu.analyzePattern(A);
+  lu.analyzePattern(A, solve::bandOf(A));
   EXPECT_FALSE(lu.factorize(A));
 }
 
