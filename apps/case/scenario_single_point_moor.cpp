@@ -125,16 +125,7 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
                      formatNumber(*length) + ": the line is stretched while held");
   const YAML::Node* steps = top.find("steps");
   const YAML::Node* dynamic = steps ? top.find("dynamic") : top.require("dynamic");
-  for (const char* key : {"relax", "dynamic"}) {
-    const YAML::Node* n = top.find(key);
-    if (n && steps)
-      diag.error(*n, std::string(key) +
-                         ": given with steps: (expected the scenario's relax: and "
-                         "dynamic:, or steps: of the case's own)");
-    else if (n && !n->IsMap())
-      diag.error(*n, std::string(key) + ": expected a map of the step's keys (got " +
-                         describeNode(*n) + ")");
-  }
+  checkScenarioStepKeys(diag, top, {"relax", "dynamic"});
   const auto cd_value =
       cd ? in.quantity(*cd, buoy.path("Cd"), kind::kNumber, Limit::NonNegative) : std::nullopt;
   if (!diag.empty() || !length || !ea || !w_air || !d || !hold || !diameter || !weight ||

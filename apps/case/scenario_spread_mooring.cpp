@@ -182,16 +182,7 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
     if (line && diag.empty() && checkStart(diag, items[i], path, *line, types, rho, g, depth))
       lines.push_back(*line);
   }
-  for (const char* key : {"statics", "dynamic"}) {
-    const YAML::Node* n = top.find(key);
-    if (n && top.find("steps"))
-      diag.error(*n, std::string(key) +
-                         ": given with steps: (expected the scenario's statics: and dynamic:, "
-                         "or steps: of the case's own)");
-    else if (n && !n->IsMap())
-      diag.error(*n, std::string(key) + ": expected a map of the step's keys (got " +
-                         describeNode(*n) + ")");
-  }
+  checkScenarioStepKeys(diag, top, {"statics", "dynamic"});
   if (!diag.empty() || lines.size() != items.size()) return root;
 
   // The expanded document: the case's own keys, then what the scenario stands for.

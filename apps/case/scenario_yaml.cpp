@@ -55,6 +55,21 @@ void refuseGeneratedKeys(Diagnostics& diag, const Fields& top, const std::string
                                        key + ": of the case's own)");
 }
 
+void checkScenarioStepKeys(Diagnostics& diag, const Fields& top,
+                           std::initializer_list<const char*> keys) {
+  std::string named;
+  for (const char* key : keys) named += (named.empty() ? "" : " and ") + std::string(key) + ":";
+  for (const char* key : keys) {
+    const YAML::Node* n = top.find(key);
+    if (n && top.find("steps"))
+      diag.error(*n, std::string(key) + ": given with steps: (expected the scenario's " + named +
+                         ", or steps: of the case's own)");
+    else if (n && !n->IsMap())
+      diag.error(*n, std::string(key) + ": expected a map of the step's keys (got " +
+                         describeNode(*n) + ")");
+  }
+}
+
 ScenarioWater readScenarioWater(Input& in, Fields& top, UnitSystem units) {
   ScenarioWater w;
   if (const YAML::Node* water = top.require("water")) {

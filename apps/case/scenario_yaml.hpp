@@ -30,6 +30,11 @@ YAML::Node firstElementTensionSeries();
 void refuseGeneratedKeys(Diagnostics& diag, const Fields& top, const std::string& scenario,
                          const std::string& own_keys);
 
+// Checks the scenario's own step keys (e.g. {"statics", "dynamic"}): each a map, and none given
+// together with steps: of the case's own.
+void checkScenarioStepKeys(Diagnostics& diag, const Fields& top,
+                           std::initializer_list<const char*> keys);
+
 // The water every ocean scenario needs: `water: {density, depth}` (required) and `gravity:`
 // (default standard gravity in the case's units).
 struct ScenarioWater {

@@ -9,13 +9,13 @@
 #include <cmath>
 #include <string>
 
+#include "tests/support/catenary_line_cases.hpp"
 #include "tests/support/mooring_catenary.hpp"
-#include "tests/support/oc3_catenary_inputs.hpp"
 
 namespace flexmoor::hydro {
 namespace {
 
-// OC3-Hywind's line (tests/support/oc3_catenary_inputs.hpp).
+// OC3-Hywind's line (tests/support/catenary_line_cases.hpp).
 CatenaryLineInputs oc3() { return test::oc3CatenaryInputs(); }
 
 test::MooringLineSolution reference(const CatenaryLineInputs& in) {
@@ -175,44 +175,35 @@ TEST(CatenaryLine, SolvesEveryLineOfAGrid) {
         }
 }
 
-void expectError(const CatenaryLineInputs& in, const std::string& fragment) {
-  try {
-    solveCatenary(in);
-    ADD_FAILURE() << "no error, expected one with \"" << fragment << "\"";
-  } catch (const CatenaryError& e) {
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-  }
-}
-
 TEST(CatenaryLine, RefusesLinesThatCannotBeStarted) {
   CatenaryLineInputs in = oc3();
   in.unstretched_length = 0.85 * std::hypot(in.horizontal_span, in.vertical_span);
-  expectError(in, "too short for its span");
+  test::expectCatenaryError(in, "too short for its span");
   in = oc3();
   in.vertical_span = -5.0;
-  expectError(in, "below the seabed");
+  test::expectCatenaryError(in, "below the seabed");
   in = oc3();
   in.weight = -1.0;
-  expectError(in, "submerged weight per length must be positive");
+  test::expectCatenaryError(in, "submerged weight per length must be positive");
   in = oc3();
   in.axial_stiffness = 0.0;
-  expectError(in, "axial stiffness EA must be positive");
+  test::expectCatenaryError(in, "axial stiffness EA must be positive");
   in = oc3();
   in.unstretched_length = std::nan("");
-  expectError(in, "unstretched length must be positive");
+  test::expectCatenaryError(in, "unstretched length must be positive");
   in = oc3();
   in.horizontal_span = 0.0;
-  expectError(in, "no horizontal span");
+  test::expectCatenaryError(in, "no horizontal span");
   in = oc3();
   in.vertical_span = 0.0;
   in.horizontal_span = 800.0;
-  expectError(in, "slack on the seabed");
+  test::expectCatenaryError(in, "slack on the seabed");
   in = oc3();
   in.unstretched_length = 1200.0;
-  expectError(in, "too long for its span");
+  test::expectCatenaryError(in, "too long for its span");
   in = oc3();
   in.friction = -0.1;
-  expectError(in, "friction coefficient");
+  test::expectCatenaryError(in, "friction coefficient");
 }
 
 }  // namespace

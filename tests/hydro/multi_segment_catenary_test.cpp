@@ -14,12 +14,12 @@
 #include <string>
 
 #include "libhydro/mooring/catenary_line.hpp"
-#include "tests/support/oc3_catenary_inputs.hpp"
+#include "tests/support/catenary_line_cases.hpp"
 
 namespace flexmoor::hydro {
 namespace {
 
-// OC3-Hywind's line (tests/support/oc3_catenary_inputs.hpp).
+// OC3-Hywind's line (tests/support/catenary_line_cases.hpp).
 CatenaryLineInputs oc3() { return test::oc3CatenaryInputs(); }
 
 // The same line as segments of the given fractions of its length, no force at the connections.
@@ -273,35 +273,26 @@ TEST(MultiSegmentCatenary, FrictionOnALaidPartOfTwoSegmentsWithAClump) {
   }
 }
 
-void expectError(const CatenaryLineInputs& in, const std::string& fragment) {
-  try {
-    solveCatenary(in);
-    ADD_FAILURE() << "no error, expected one with \"" << fragment << "\"";
-  } catch (const CatenaryError& e) {
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-  }
-}
-
 TEST(MultiSegmentCatenary, RefusesLinesThatCannotBeStarted) {
   CatenaryLineInputs in = chainWireChain();
   in.connection_forces = {-40.0e3};
-  expectError(in, "1 connection forces for 3 segments");
+  test::expectCatenaryError(in, "1 connection forces for 3 segments");
   in = chainWireChain();
   in.segments[1].weight = -10.0;
-  expectError(in, "submerged weight per length of segment 2 must be positive");
+  test::expectCatenaryError(in, "submerged weight per length of segment 2 must be positive");
   in = chainWireChain();
   in.connection_forces[0] = std::nan("");
-  expectError(in, "force at connection point 1 must be finite");
+  test::expectCatenaryError(in, "force at connection point 1 must be finite");
   in = chainWireChain();
   in.connection_forces = {30.0e3, 0.0};  // a buoy where the line lies on the bed
   in.horizontal_span = 700.0;
-  expectError(in, "the buoy at connection point 1 lies on the laid part");
+  test::expectCatenaryError(in, "the buoy at connection point 1 lies on the laid part");
   in = chainWireChain();
   in.horizontal_span = 400.0;
-  expectError(in, "slack on the seabed");
+  test::expectCatenaryError(in, "slack on the seabed");
   in = chainWireChain();
   in.horizontal_span = 1000.0;
-  expectError(in, "too short for its span");
+  test::expectCatenaryError(in, "too short for its span");
 }
 
 }  // namespace
