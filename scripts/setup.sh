@@ -10,10 +10,10 @@ cd "$(dirname "$0")/.."
 # clang, libfuzzer-14-dev: the libFuzzer target of the case reader (scripts/fuzz.sh).
 # python3-xarray, python3-netcdf4: the test that opens a result as the Python ecosystem does;
 # python3-matplotlib: `flexmoor plot`. (Debian's modules, for the system interpreter.)
-# libcli11-dev: the command line. liblapack-dev: the band LU (dgbtrf) of mooring lines.
+# libcli11-dev: the command line.
 packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgsl-dev
           libfftw3-dev libnetcdf-dev netcdf-bin libyaml-cpp-dev libgtest-dev libbenchmark-dev
-          libspectra-dev libpng-dev liblapack-dev libopenblas0-serial ccache libcli11-dev clang libfuzzer-14-dev
+          libspectra-dev libpng-dev libopenblas0-serial ccache libcli11-dev clang libfuzzer-14-dev
           python3-xarray python3-netcdf4 python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do

@@ -3,15 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-// LAPACK (Fortran calling convention; the trailing length is that of the character argument).
-extern "C" {
-void dgbtrf_(const int* m, const int* n, const int* kl, const int* ku, double* ab, const int* ldab,
-             int* ipiv, int* info);
-void dgbtrs_(const char* trans, const int* n, const int* kl, const int* ku, const int* nrhs,
-             const double* ab, const int* ldab, const int* ipiv, double* b, const int* ldb,
-             int* info, std::size_t trans_length);
-}
-
 namespace flexmoor::solve {
 
 Band bandOf(const model::SparseMatrix& A) {
@@ -47,17 +38,59 @@ bool BandedLu::factorize(const model::SparseMatrix& A) {
   std::fill(ab_.begin(), ab_.end(), 0.0);
   const double* values = A.valuePtr();
   for (std::size_t k = 0; k < slot_.size(); ++k) ab_[slot_[k]] = values[k];
-  int info = 0;
-  dgbtrf_(&n_, &n_, &kl_, &ku_, ab_.data(), &ldab_, pivots_.data(), &info);
-  return info == 0;
+  return factorizeBand();
+}
+
+// LAPACK's dgbtf2 (unblocked band LU with partial pivoting, the algorithm dgbtrf runs for bands
+// narrower than its block of 32), in its storage: A(i, j) at ab_[kv + i - j + j ldab_], kv = kl +
+// ku, the kl rows above holding the fill of the row interchanges. LAPACK does each column's
+// pivot search, scaling and rank-1 update through a BLAS call (idamax, dscal, dger, which calls
+// daxpy per column): for a half-bandwidth of 8 the calls cost more than their 8 x 16
+// multiply-adds, and this loop runs the same arithmetic in half the time (docs/performance.md).
+bool BandedLu::factorizeBand() {
+  const int kv = kl_ + ku_;
+  int ju = 0;  // the last column that the interchanges so far reach
+  for (int j = 0; j < n_; ++j) {
+    double* column = ab_.data() + static_cast<std::size_t>(j) * ldab_ + kv;  // A(j + i, j)
+    const int km = std::min(kl_, n_ - 1 - j);
+    int p = 0;
+    for (int i = 1; i <= km; ++i)
+      if (std::fabs(column[i]) > std::fabs(column[p])) p = i;
+    pivots_[j] = j + p;
+    if (column[p] == 0.0) return false;  // exactly singular, as dgbtrf's info > 0
+    ju = std::max(ju, std::min(j + ku_ + p, n_ - 1));
+    if (p != 0)
+      for (int c = j; c <= ju; ++c) {
+        double* to = ab_.data() + static_cast<std::size_t>(c) * ldab_ + kv - c;  // A(., c)
+        std::swap(to[j], to[j + p]);
+      }
+    const double reciprocal = 1.0 / column[0];
+    for (int i = 1; i <= km; ++i) column[i] *= reciprocal;
+    for (int c = j + 1; c <= ju; ++c) {
+      double* to = ab_.data() + static_cast<std::size_t>(c) * ldab_ + kv - c;
+      const double u = to[j];
+      if (u == 0.0) continue;
+      for (int i = 1; i <= km; ++i) to[j + i] -= u * column[i];
+    }
+  }
+  return true;
 }
 
 Eigen::VectorXd BandedLu::solve(const Eigen::VectorXd& b) const {
+  // dgbtrs: L y = P b column by column, then U x = y by columns from the last.
   Eigen::VectorXd x = b;
-  if (n_ == 0) return x;
-  const int one = 1;
-  int info = 0;
-  dgbtrs_("N", &n_, &kl_, &ku_, &one, ab_.data(), &ldab_, pivots_.data(), x.data(), &n_, &info, 1);
+  const int kv = kl_ + ku_;
+  for (int j = 0; j < n_; ++j) {
+    if (pivots_[j] != j) std::swap(x(j), x(pivots_[j]));
+    const double* l = ab_.data() + static_cast<std::size_t>(j) * ldab_ + kv;
+    const int km = std::min(kl_, n_ - 1 - j);
+    for (int i = 1; i <= km; ++i) x(j + i) -= l[i] * x(j);
+  }
+  for (int j = n_ - 1; j >= 0; --j) {
+    const double* u = ab_.data() + static_cast<std::size_t>(j) * ldab_ + kv - j;  // U(., j)
+    x(j) /= u[j];
+    for (int i = std::max(0, j - kv); i < j; ++i) x(i) -= u[i] * x(j);
+  }
   return x;
 }
 

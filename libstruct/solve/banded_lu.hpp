@@ -1,6 +1,7 @@
 #pragma once
 // LU with partial pivoting of a sparse matrix whose nonzeros lie in a narrow band about the
-// diagonal, by LAPACK's band solver (dgbtrf / dgbtrs). A mooring line numbered from anchor to
+// diagonal: LAPACK's band algorithm (dgbtf2 / dgbtrs) in LAPACK's band storage, written out
+// (banded_lu.cpp says why). A mooring line numbered from anchor to
 // fairlead is such a matrix: an L3 line couples each node with the two on either side, so its
 // half-bandwidth is 8 whatever its length, and n (kl + ku) flops factorise it. A general sparse
 // LU spends more on its pivot search and memory than on that arithmetic (docs/performance.md).
@@ -39,9 +40,11 @@ class BandedLu {
 
  private:
   int n_ = 0, kl_ = 0, ku_ = 0, ldab_ = 1;
-  std::vector<int> slot_;   // per nonzero of A (in A's storage order), its place in ab_
-  std::vector<double> ab_;  // LAPACK band storage, (2 kl + ku + 1) x n, column-major
-  std::vector<int> pivots_;
+  std::vector<int> slot_;    // per nonzero of A (in A's storage order), its place in ab_
+  std::vector<double> ab_;   // LAPACK band storage, (2 kl + ku + 1) x n, column-major
+  std::vector<int> pivots_;  // row j was interchanged with row pivots_[j] (0-based)
+
+  bool factorizeBand();
 };
 
 }  // namespace flexmoor::solve

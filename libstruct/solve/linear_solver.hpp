@@ -1,7 +1,7 @@
 #pragma once
 // Direct solvers for the linearised systems. A matrix whose nonzeros lie in a narrow band (a
-// mooring line, a chain of elements numbered along it: bandIsNarrow) is factorised by LAPACK's
-// band LU, symmetric or not. Otherwise the symmetric tangent is factorised with CHOLMOD (symbolic
+// mooring line, a chain of elements numbered along it: bandIsNarrow) is factorised by a band LU,
+// symmetric or not. Otherwise the symmetric tangent is factorised with CHOLMOD (symbolic
 // analysis once per pattern, numeric factorisation per update); when it is not positive definite
 // (compression, a limit point) the solver falls back to UMFPACK's LU, which is also the solver
 // for non-symmetric systems (follower-pressure load stiffness, motion-dependent loads).
