@@ -89,6 +89,46 @@ void Assembler::zeroOnPattern(SparseMatrix& m) const {
     m = pattern_;  // the pattern's values are zero
 }
 
+void Assembler::zeroLoadMatrices(LoadMatrices& J) const {
+  zeroOnPattern(J.stiffness);
+  if (J.summed) return;
+  zeroOnPattern(J.damping);
+  zeroOnPattern(J.mass);
+}
+
+template <class Matrix>
+void Assembler::scatterLoadMatrices(const std::vector<int>& slots, const Matrix* stiffness,
+                                    const Matrix* damping, const Matrix* mass, LoadMatrices& J,
+                                    double scale) const {
+  if (!J.summed) {
+    if (stiffness) scatterMatrix(slots, *stiffness, J.stiffness, scale);
+    if (damping) scatterMatrix(slots, *damping, J.damping, scale);
+    if (mass) scatterMatrix(slots, *mass, J.mass, scale);
+    return;
+  }
+  const LoadMatrices::Weights& w = *J.summed;
+  const Matrix* parts[] = {stiffness, damping, mass};
+  const double weights[] = {w.stiffness, w.damping, w.mass};
+  // A fixed-size (a node's) sum on the stack, an element's in storage that is reused.
+  Matrix fixed_size;
+  Matrix& sum = [&]() -> Matrix& {
+    if constexpr (Matrix::RowsAtCompileTime == Eigen::Dynamic)
+      return weighted_;
+    else
+      return fixed_size;
+  }();
+  bool first = true;
+  for (int i = 0; i < 3; ++i) {
+    if (!parts[i] || weights[i] == 0.0) continue;
+    if (first)
+      sum = weights[i] * *parts[i];
+    else
+      sum += weights[i] * *parts[i];
+    first = false;
+  }
+  if (!first) scatterMatrix(slots, sum, J.stiffness, scale);
+}
+
 void Assembler::internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const {
   force.setZero(3 * model_.nodeCount());
   if (K) zeroOnPattern(*K);
@@ -132,16 +172,14 @@ void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load,
         continue;  // zero on this element
       load += p;
       if (!jacobians) continue;
-      scatterMatrix(slot_[e], element_jacobians_.stiffness, J->stiffness, lambda);
-      scatterMatrix(slot_[e], element_jacobians_.damping, J->damping, lambda);
-      scatterMatrix(slot_[e], element_jacobians_.mass, J->mass, lambda);
+      const element::LoadMatrices& k = element_jacobians_;
+      scatterLoadMatrices(slot_[e], &k.stiffness, &k.damping, &k.mass, *J, lambda);
     }
   load *= lambda;
 }
 
 void Assembler::externalLoad(const State& state, Eigen::VectorXd& load, LoadMatrices* J) const {
-  if (J)
-    for (SparseMatrix* m : {&J->stiffness, &J->damping, &J->mass}) zeroOnPattern(*m);
+  if (J) zeroLoadMatrices(*J);
   const double lambda = state.load_factor;
   load.setZero(3 * model_.nodeCount());
   for (const NodalLoad& p : model_.nodalLoads())
@@ -167,9 +205,8 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load, LoadMatr
         node_loads[i]->evaluate(nodePoint(state, node_loads[i]->node()), jacobians);
     load.segment<3>(3 * node_loads[i]->node()) += lambda * f.force;
     if (!jacobians) continue;
-    scatterMatrix(node_slot_[i], f.d_position, J->stiffness, -lambda);
-    scatterMatrix(node_slot_[i], f.d_velocity, J->damping, -lambda);
-    scatterMatrix(node_slot_[i], f.d_acceleration, J->mass, -lambda);
+    scatterLoadMatrices(node_slot_[i], &f.d_position, &f.d_velocity, &f.d_acceleration, *J,
+                        -lambda);
   }
   for (const PressureLoad& pressure : model_.pressures()) {
     const double value = pressureFactor(pressure, state);
@@ -186,7 +223,9 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load, LoadMatr
                                     jacobians ? &element_jacobians_ : nullptr);
       const auto& index = full_index_[e];
       for (size_t a = 0; a < index.size(); ++a) load(index[a]) += lambda * p(a);
-      if (jacobians) scatterMatrix(slot_[e], element_jacobians_.stiffness, J->stiffness, lambda);
+      if (jacobians)
+        scatterLoadMatrices<Eigen::MatrixXd>(slot_[e], &element_jacobians_.stiffness, nullptr,
+                                             nullptr, *J, lambda);
     }
   }
   memo.valid = true;
@@ -211,8 +250,7 @@ void Assembler::loadMatrices(const State& state, LoadMatrices& J) const {
 
 void Assembler::dampingForce(const State& state, Eigen::VectorXd& force, LoadMatrices* J) const {
   force.setZero(3 * model_.nodeCount());
-  if (J)
-    for (SparseMatrix* m : {&J->stiffness, &J->damping, &J->mass}) zeroOnPattern(*m);
+  if (J) zeroLoadMatrices(*J);
   Eigen::VectorXd f;
   element::LoadMatrices& k = element_jacobians_;
   for (int e : damped_) {
@@ -220,8 +258,7 @@ void Assembler::dampingForce(const State& state, Eigen::VectorXd& force, LoadMat
     const auto& index = full_index_[e];
     for (size_t a = 0; a < index.size(); ++a) force(index[a]) += f(a);
     if (!J) continue;
-    scatterMatrix(slot_[e], k.stiffness, J->stiffness);
-    scatterMatrix(slot_[e], k.damping, J->damping);
+    scatterLoadMatrices<Eigen::MatrixXd>(slot_[e], &k.stiffness, &k.damping, nullptr, *J, 1.0);
   }
 }
 

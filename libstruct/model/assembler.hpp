@@ -3,6 +3,7 @@
 // a map from every element matrix entry to its slot in the compressed storage, so an update only
 // scatters values. Full vectors are indexed 3 * node + component (the layout of NodalField).
 #include <Eigen/Sparse>
+#include <optional>
 #include <vector>
 
 #include "libstruct/model/model.hpp"
@@ -15,6 +16,14 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 // free dofs, on the assembler's pattern: stiffness -dP/du, damping -dP/du', mass -dP/du''.
 struct LoadMatrices {
   SparseMatrix stiffness, damping, mass;
+  // When set, the three are not kept apart: every element's (and node's) three matrices go
+  // into `stiffness` as one weighted sum, k K + c C + m M (what a time step's effective tangent
+  // takes of them, Eq. 4.63), and `damping` and `mass` stay as they are. One sparse matrix to
+  // zero and one scatter an element instead of three.
+  struct Weights {
+    double stiffness = 1.0, damping = 0.0, mass = 0.0;
+  };
+  std::optional<Weights> summed;
 };
 
 class Assembler {
@@ -94,6 +103,14 @@ class Assembler {
                    LoadMatrices* J = nullptr) const;
   // Sets m to the pattern with zero values, without reallocating when m has it already.
   void zeroOnPattern(SparseMatrix& m) const;
+  // zeroOnPattern of the matrices of J that it fills (J.summed: its stiffness alone).
+  void zeroLoadMatrices(LoadMatrices& J) const;
+  // Adds scale times an element's or node's matrices (a null one is zero) into J: each into its
+  // own, or their weighted sum into J.stiffness (J.summed).
+  template <class Matrix>
+  void scatterLoadMatrices(const std::vector<int>& slots, const Matrix* stiffness,
+                           const Matrix* damping, const Matrix* mass, LoadMatrices& J,
+                           double scale) const;
   // Work space of one sweep over the elements at one state, and whether the memos below hold
   // that state's forces (asked once a sweep).
   struct EndForceScratch {
@@ -133,6 +150,7 @@ class Assembler {
   mutable std::vector<Eigen::MatrixXd> consistent_masses_;
   mutable EndForceScratch results_scratch_;  // elementResults' work space, kept between calls
   mutable element::LoadMatrices element_jacobians_;  // one element's load matrices, reused
+  mutable Eigen::MatrixXd weighted_;  // their weighted sum (LoadMatrices::summed), reused
   mutable ForceMemo internal_memo_, external_memo_;
 };
 

@@ -64,22 +64,27 @@ Residual TimeIntegrator::balance(const model::State& x, bool tangent, bool loads
   return R;
 }
 
+void TimeIntegrator::summedWeights(double h) {
+  const double a0 = 1.0 / (beta_ * h * h);
+  const double c = (1.0 + alpha_) * gamma_ / (beta_ * h);
+  viscous_.summed = model::LoadMatrices::Weights{1.0 + alpha_, c, 0.0};
+  loads_.summed = model::LoadMatrices::Weights{1.0 + alpha_, c, (1.0 + alpha_) * a0};
+}
+
 // Effective tangent (Eq. 4.63): (1 + alpha) (K_T + K_d + K_L) + gamma / (beta h) (1 + alpha)
 // (C + C_d + C_L) + a0 (M + (1 + alpha) M_L), with C = a_M M + a_K K0, the internal damping's
 // dF_d/du = K_d and dF_d/du' = C_d, and the motion loads' stiffness K_L, damping C_L and added
-// mass M_L. Everything is assembled on the assembler's one pattern, so the sum is taken
-// coefficient by coefficient, without a sparse merge or an allocation.
+// mass M_L. The internal damping's and the motion loads' matrices arrive summed with these
+// weights (summedWeights), one matrix each; everything is on the assembler's one pattern, so
+// the sum is taken coefficient by coefficient, without a sparse merge or an allocation.
 void TimeIntegrator::factorEffectiveTangent(double h) {
   const double a0 = 1.0 / (beta_ * h * h);
   const double c = (1.0 + alpha_) * gamma_ / (beta_ * h);
-  Keff_ = K_;
+  if (Keff_.nonZeros() != K_.nonZeros()) Keff_ = K_;  // the pattern, once
   Keff_.coeffs() = (1.0 + alpha_) * K_.coeffs() + (a0 + c * o_.rayleigh_mass) * M_.coeffs();
   if (o_.rayleigh_stiffness != 0.0) Keff_.coeffs() += (c * o_.rayleigh_stiffness) * K0_.coeffs();
-  if (assembler_.hasDamping())
-    Keff_.coeffs() += (1.0 + alpha_) * viscous_.stiffness.coeffs() + c * viscous_.damping.coeffs();
-  if (motion_loads_)
-    Keff_.coeffs() += (1.0 + alpha_) * loads_.stiffness.coeffs() + c * loads_.damping.coeffs() +
-                      ((1.0 + alpha_) * a0) * loads_.mass.coeffs();
+  if (assembler_.hasDamping()) Keff_.coeffs() += viscous_.stiffness.coeffs();
+  if (motion_loads_) Keff_.coeffs() += loads_.stiffness.coeffs();
   if (!linear_.factorize(Keff_)) {
     singular_ = true;
     return;
@@ -126,7 +131,9 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   const bool refresh_each_step = tangent_iterates ||
                                  steps_since_update_ + 1 >= std::max(1, o_.stiffness_update) ||
                                  h != factor_h_;
-  const bool kept = kept_.valid && model::sameState(kept_.state, s);
+  // What the last step kept was summed with its own step's weights.
+  const bool kept = kept_.valid && kept_.h == h && model::sameState(kept_.state, s);
+  summedWeights(h);
   const bool tangent_missing = refresh_each_step && !(kept && kept_.tangent);
   const bool loads_missing = motion_loads_ && !(kept && kept_.loads);
   VectorXd previous_balance;  // HHT: P_n - F_n - F_d,n - C v_n
@@ -180,7 +187,7 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
       s = next;
       steps_since_update_ = refresh_each_step ? 0 : steps_since_update_ + 1;
       s.motion = record(s);
-      kept_ = {true, tangent, loads, s, balance_here};
+      kept_ = {true, tangent, loads, h, s, balance_here};
       return true;
     }
     if (it == o_.max_iterations) return false;
@@ -284,6 +291,7 @@ void TimeIntegrator::initialAcceleration(model::State& s) {
   setFree(model_, VectorXd::Zero(model_.equationCount()), s.acceleration);
   VectorXd inertia_full;
   assembler_.inertiaForce(masses_, s, inertia_full);  // prescribed accelerations only
+  loads_.summed.reset();  // the added mass alone; the first step sums them again
   const VectorXd rhs =
       balance(s, false, model_.hasMotionLoads()).free - assembler_.restrictToFree(inertia_full);
   model::SparseMatrix mass = M_;

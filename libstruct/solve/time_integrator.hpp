@@ -74,6 +74,9 @@ class TimeIntegrator {
   // (outOfBalance); from the same sweep, the tangent K_ and the internal damping's viscous_ when
   // `tangent`, the motion loads' loads_ when `loads`.
   Residual balance(const model::State& x, bool tangent, bool loads);
+  // Sets the weights in which viscous_ and loads_ take their matrices for a step of h: their
+  // shares of the effective tangent (factorEffectiveTangent).
+  void summedWeights(double h);
   void factorEffectiveTangent(double h);
   model::MotionRecord record(const model::State& s) const;
 
@@ -85,8 +88,9 @@ class TimeIntegrator {
   bool motion_loads_;                      // the model has stiff motion-dependent loads in use
   std::vector<Eigen::MatrixXd> masses_;    // element mass matrices, constant
   model::SparseMatrix M_, K_, K0_, Keff_;  // on the assembler's pattern
-  model::LoadMatrices loads_;              // the motion loads' matrices at their last update
-  model::LoadMatrices viscous_;            // dF_d/du, dF_d/du' of internal damping, with K_
+  // The motion loads' matrices at their last update, and the internal damping's dF_d/du,
+  // dF_d/du' (with K_), each summed into its `stiffness` with its effective-tangent weights.
+  model::LoadMatrices loads_, viscous_;
   LinearSolver linear_;
   std::map<std::pair<int, int>, Target> targets_;  // driven dofs of the step under way
   DynamicReport report_;
@@ -99,6 +103,7 @@ class TimeIntegrator {
   // balance and which of K_ / viscous_ and loads_ it computed, at `state`.
   struct Kept {
     bool valid = false, tangent = false, loads = false;
+    double h = 0.0;  // the step whose weights loads_ and viscous_ were summed with
     model::State state;
     Eigen::VectorXd balance;
   } kept_;
