@@ -283,10 +283,10 @@ def draw_spectrum(ds, args):
         function, target_label = target
         w = np.linspace(omega[1] * 0.5, omega[-1], 2000)
         band = np.atleast_1d(ds.attrs.get("sea_spectrum_band", [0.0, omega[-1]]))
-        top = min(omega[-1], 1.25 * band[-1])
-        if units == length_units:
+        if units == length_units:  # an elevation or a motion: up to a little past the band
             twin = ax
-        else:  # another quantity: the target on its own axis at the right
+            top = min(omega[-1], 1.25 * band[-1])
+        else:  # another quantity, all its frequencies: the target on its own axis at the right
             twin = ax.twinx()
             twin.set_ylabel("target wave spectrum [%s2 %s rad-1]" % (length_units, time_units))
         twin.plot(w, function(w), color="C3", linewidth=1.6, linestyle="--",
