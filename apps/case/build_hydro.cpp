@@ -40,15 +40,22 @@ std::shared_ptr<const hydro::Sea> makeSea(const HydroSpec& h, SeaOrigin& origin)
     hydro::SynthesisedSea s =
         hydro::synthesise(h.spectral->spectrum, h.spectral->options, depth, g);
     components = std::move(s.components);
-    origin = {"spectrum", discretisationName(h.spectral->options.discretisation),
-              h.spectral->options.seed, s.repeat_period, 0};
+    const hydro::SynthesisOptions& o = h.spectral->options;
+    const double wp = h.spectral->spectrum.peakFrequency();
+    origin = {"spectrum",
+              discretisationName(o.discretisation),
+              o.seed,
+              s.repeat_period,
+              0,
+              std::make_shared<const hydro::WaveSpectrum>(h.spectral->spectrum),
+              {o.omega_min_ratio * wp, o.omega_max_ratio * wp}};
   }
   if (h.measured) {
     const MeasuredSeaSpec& m = *h.measured;
     hydro::ReconstructedSea s =
         hydro::reconstruct(m.record, m.heading, m.gauge, m.omega_cutoff, depth, g);
     components = std::move(s.components);
-    origin = {"measured", "", std::nullopt, s.repeat_period, 0};
+    origin = {"measured", "", std::nullopt, s.repeat_period, 0, nullptr, {0.0, 0.0}};
   }
   origin.components = static_cast<int>(components.size());
   for (const hydro::WaveComponent& c : components) sea->addComponent(c);

@@ -35,7 +35,8 @@ Every output's name starts with the case's, so cases can share one -o DIR. Outpu
 place by a rename when the run ends: the netCDF streams into DIR/<case>.nc.partial, so a failed
 or killed run never spoils an earlier DIR/<case>.nc; a second run of the case into DIR at once
 is refused (the lock DIR/.<case>.lock).
-'flexmoor plot' draws time series of a result as a PNG figure.
+'flexmoor plot' draws a figure of a run or a study as a PNG: time series, a spectrum against the
+sea's target, line shapes, response-amplitude curves, extremes and response spectra.
 
 Exit codes:
   0  done (for check: the case is valid)
@@ -123,22 +124,55 @@ Prints one line per case under cases/: the name that 'flexmoor run NAME' and 'fl
 NAME' accept, then its title. Takes no arguments.
 )";
 
-inline constexpr const char* kPlotSummary = "draw time series of a result as a PNG figure";
+inline constexpr const char* kPlotSummary = "draw a figure of a run or a study as a PNG";
 
 inline constexpr const char* kPlotDetails = R"(
-Draws one panel per --series from RESULT (a DIR/<case>.nc written by 'flexmoor run'), with the
-file's units, a legend and the case's title, using Debian's matplotlib (/usr/bin/python3).
+Draws one figure from RESULT with the file's units, legends and title, using Debian's
+matplotlib (/usr/bin/python3). One kind of figure at a time:
+
+Of a run (DIR/<case>.nc of 'flexmoor run'):
+  --series SPEC ...  time series, one panel each (the default: the largest end tension and the
+                     displacement of the node that moves most; static steps' records as points)
+  --spectrum SPEC    the Welch spectrum (Hann window, half overlap, per rad/s) of one series
+                     over the last step (records of time steps cut short interpolated onto the
+                     step's dt), against the target spectrum of the run's sea (its
+                     JONSWAP, Pierson-Moskowitz or table, and the synthesised band); the target
+                     shares the axis when the series is a length, else has its own at the right.
+                     --segment SECONDS (default: a quarter of the record), --from SECONDS (leave
+                     out a start-up transient)
+  --shapes T1,T2     the elements at the records nearest these times, one colour a time, in
+                     --plane xz (or xy, yz), equal scales
 SPEC is VARIABLE@INDEX with 1-based indices as in the file's coordinates:
   position_x@node=5            x of node 5 in the current configuration
   speed@node=5                 |velocity| of node 5
   tension_end@element=1,end=1  axial force at the first end of element 1 (end=2: the last)
-  load_factor                  a variable of the record alone
-Without --series: the largest end tension over the elements and the displacement of the node
-that moves most. Records of static steps, which share one time, are drawn as points.
+  wave_elevation               the sea's elevation at x = y = 0 (a variable of the record alone)
+
+Of a study (DIR/study.nc of 'flexmoor study'; PARAMETER is a varied path with '.' as '_', as
+listed in its study_parameters; failed members are left out):
+  --rao NAME --against PARAMETER [--wave-height H|PARAMETER] [--group PARAMETER]
+                     NAME_amplitude against the parameter; with --wave-height, divided by half
+                     the wave height (a response-amplitude operator)
+  --extremes NAME --against PARAMETER [--group PARAMETER]
+                     NAME_max (filled markers) and NAME_mpm (open markers, when collected)
+                     against the parameter, one colour per value of --group, and their means
+                     over the group as lines
+  --psd NAME         every member's response spectrum NAME_psd over the study's frequency axis
+
+Bad arguments (a variable, parameter or time the file does not hold, an option of another
+figure) are named on stderr, exit code 2.
 
 Examples:
   flexmoor plot results/driven-taut-cable/driven-taut-cable.nc -o cable.png
   flexmoor plot RESULT.nc -o tension.png --series tension_end@element=1,end=1 --series speed@node=5
+  flexmoor plot RESULT.nc -o sea.png --spectrum wave_elevation --from 100
+  flexmoor plot RESULT.nc -o fairlead.png --spectrum tension_end@element=1,end=1 --segment 200
+  flexmoor plot RESULT.nc -o shapes.png --shapes 100,200,300
+  flexmoor plot DIR/study.nc -o rao.png --rao heave --against waves_components_0_period \
+      --wave-height waves_components_0_height
+  flexmoor plot DIR/study.nc -o extremes.png --extremes fairlead_tension_1 \
+      --against waves_spectrum_Hs --group waves_spectrum_seed
+  flexmoor plot DIR/study.nc -o psd.png --psd fairlead_tension_1
 )";
 
 }  // namespace flexmoor::cli

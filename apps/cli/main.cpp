@@ -68,8 +68,8 @@ int run(const std::string& name, const RunOptions& options) {
 // Hands over to apps/plot/flexmoor_plot.py under Debian's interpreter (its matplotlib and
 // xarray belong to it); returns only when the interpreter cannot be started.
 int plot(const std::string& result, const std::string& png, const std::vector<std::string>& series,
-         const std::string& title) {
-  std::vector<std::string> args = plotArguments(result, png, series, title);
+         const std::string& title, const std::vector<std::string>& figure_options) {
+  std::vector<std::string> args = plotArguments(result, png, series, title, figure_options);
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> series;
   CLI::App* plot_command = app.add_subcommand("plot", cli::kPlotSummary);
   plot_command->footer(cli::kPlotDetails);
-  plot_command->add_option("RESULT", result, "a netCDF result of 'flexmoor run'")
+  plot_command->add_option("RESULT", result, "a run's DIR/<case>.nc or a study's DIR/study.nc")
       ->required()
       ->type_name("");
   plot_command->add_option("-o,--output", png, "the PNG to write")->required()->type_name("PNG");
@@ -127,8 +127,28 @@ int main(int argc, char** argv) {
       ->type_name("SPEC")
       ->take_all()
       ->allow_extra_args(false);
-  plot_command->add_option("--title", title, "the figure's title (default: the case's)")
+  plot_command->add_option("--title", title, "the figure's title (default: the file's)")
       ->type_name("TEXT");
+  // The other figures' options go to the plot as given; it checks them (help_text.hpp).
+  struct FigureOption {
+    const char *flag, *type, *help;
+    std::string value;
+  };
+  std::vector<FigureOption> figure_options = {
+      {"--spectrum", "SPEC", "the Welch spectrum of one series against the sea's target", ""},
+      {"--segment", "SECONDS", "--spectrum: the Welch segment (default: a quarter of the record)",
+       ""},
+      {"--from", "SECONDS", "--spectrum: leave out the records before this time", ""},
+      {"--shapes", "T1,T2,...", "the lines' shapes at the records nearest these times", ""},
+      {"--plane", "PLANE", "--shapes: the plane drawn, two of x, y, z (default xz)", ""},
+      {"--rao", "NAME", "study: NAME_amplitude against --against (an RAO with --wave-height)", ""},
+      {"--extremes", "NAME", "study: NAME_max and NAME_mpm against --against", ""},
+      {"--psd", "NAME", "study: the members' response spectra NAME_psd", ""},
+      {"--against", "PARAMETER", "--rao, --extremes: the parameter along the horizontal axis", ""},
+      {"--group", "PARAMETER", "--rao, --extremes: one colour per value of this parameter", ""},
+      {"--wave-height", "H|PARAMETER", "--rao: divide by half this wave height", ""}};
+  for (FigureOption& o : figure_options)
+    plot_command->add_option(o.flag, o.value, o.help)->type_name(o.type);
 
   try {
     app.parse(argc, argv);
@@ -139,6 +159,11 @@ int main(int argc, char** argv) {
   options.figure = !no_figure;
   if (check_command->parsed()) return check(case_name);
   if (cases_command->parsed()) return listNamedCases();
-  if (plot_command->parsed()) return plot(result, png, series, title);
+  if (plot_command->parsed()) {
+    std::vector<std::string> given;
+    for (const FigureOption& o : figure_options)
+      if (!o.value.empty()) given.insert(given.end(), {o.flag, o.value});
+    return plot(result, png, series, title, given);
+  }
   return run(case_name, options);
 }

@@ -92,6 +92,12 @@ void NetcdfFile::putAttribute(int variable, const std::string& name, double valu
         "writing attribute " + variableName(variable) + ":" + name);
 }
 
+void NetcdfFile::putAttribute(int variable, const std::string& name,
+                              const std::vector<double>& values) {
+  check(nc_put_att_double(id_, variable, name.c_str(), NC_DOUBLE, values.size(), values.data()),
+        "writing attribute " + variableName(variable) + ":" + name);
+}
+
 void NetcdfFile::writtenInFull(int variable) {
   check(nc_def_var_fill(id_, variable, NC_NOFILL, nullptr),
         "defining variable " + variableName(variable) + " without fill");

@@ -47,6 +47,7 @@ class NetcdfFile {
   void putAttribute(int variable, const std::string& name, const std::string& value);
   void putAttribute(int variable, const std::string& name, int value);
   void putAttribute(int variable, const std::string& name, double value);
+  void putAttribute(int variable, const std::string& name, const std::vector<double>& values);
   // Define mode: the variable is written whole in every record, so HDF5 need not fill its
   // chunks with the fill value before writing them (most of a record's cost on small models).
   void writtenInFull(int variable);

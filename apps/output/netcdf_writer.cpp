@@ -7,6 +7,8 @@
 
 #include "apps/output/finite_value.hpp"
 #include "apps/output/membrane_resultants.hpp"
+#include "libhydro/waves/sea.hpp"
+#include "libhydro/waves/wave_spectrum.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -49,7 +51,8 @@ NetcdfWriter::NetcdfWriter(const std::string& path, const model::Model& model, c
       reference_(model.reference()),
       force_unit_(unitNames(c.units).force),
       resultant_unit_(unitNames(c.units).force + "/" + unitNames(c.units).length),
-      mass_unit_(unitNames(c.units).mass) {
+      mass_unit_(unitNames(c.units).mass),
+      sea_(c.sea) {
   if (node_count_ == 0 || element_count_ == 0)
     throw std::runtime_error(path + ": cannot write results of a model without nodes or elements");
   defineHeader(model, c);
@@ -79,6 +82,7 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
     // In the case's time unit (s in both systems); absent when the sea does not repeat.
     if (sea.repeat_period > 0.0)
       file_.putAttribute(NC_GLOBAL, "sea_repeat_period", sea.repeat_period);
+    if (sea.spectrum) defineSpectrum(*sea.spectrum, sea.band);
   }
 
   size_t element_nodes = 0;
@@ -147,11 +151,39 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
       file_.defineVariable("tension_end", NC_DOUBLE, {dim_step_, dim_element_, dim_end_},
                            "axial force at the first and the last node of the element", u.force);
   file_.putAttribute(tension_end_, "coordinates", kElementCoordinates);
+  if (sea_) {
+    wave_elevation_ = file_.defineVariable(
+        "wave_elevation", NC_DOUBLE, {dim_step_},
+        "incident wave elevation at x = y = 0 (with the sea's ramp)", u.length);
+    file_.putAttribute(wave_elevation_, "standard_name", "sea_surface_elevation");
+    file_.putAttribute(wave_elevation_, "coordinates", "step_number step_name load_factor");
+    file_.writtenInFull(wave_elevation_);
+  }
   file_.putAttribute(tension_end_, "_FillValue", NC_FILL_DOUBLE);  // membranes and point masses
   // (tension_end keeps its fill: NC_NOFILL would drop the _FillValue that marks membranes.)
   for (const int id : {time_, step_number_, step_name_, load_factor_}) file_.writtenInFull(id);
   for (const Vector3Variable* v : {&displacement_, &position_, &velocity_, &reaction_})
     for (const int id : v->id) file_.writtenInFull(id);
+}
+
+void NetcdfWriter::defineSpectrum(const hydro::WaveSpectrum& s, std::pair<double, double> band) {
+  file_.putAttribute(NC_GLOBAL, "sea_spectrum_band", std::vector<double>{band.first, band.second});
+  if (s.isTable()) {
+    file_.putAttribute(NC_GLOBAL, "sea_spectrum", "table");
+    std::vector<double> omega, density;
+    for (const auto& [w, S] : s.samples()) {
+      omega.push_back(w);
+      density.push_back(S);
+    }
+    file_.putAttribute(NC_GLOBAL, "sea_spectrum_omega", omega);
+    file_.putAttribute(NC_GLOBAL, "sea_spectrum_density", density);
+    return;
+  }
+  const double gamma = s.peakEnhancement();
+  file_.putAttribute(NC_GLOBAL, "sea_spectrum", gamma == 1.0 ? "pierson_moskowitz" : "jonswap");
+  file_.putAttribute(NC_GLOBAL, "sea_spectrum_Hs", s.significantHeight());
+  file_.putAttribute(NC_GLOBAL, "sea_spectrum_Tp", 2.0 * std::acos(-1.0) / s.peakFrequency());
+  file_.putAttribute(NC_GLOBAL, "sea_spectrum_gamma", gamma);
 }
 
 int NetcdfWriter::defineIndex(const std::string& name, int dimension,
@@ -381,6 +413,9 @@ void NetcdfWriter::write(const ResultFrame& frame) {
     };
     gatherScalar(time_, "time", s.time);
     gatherScalar(load_factor_, "load_factor", s.load_factor);
+    if (sea_)
+      gatherScalar(wave_elevation_, "wave_elevation",
+                   sea_->elevation(Eigen::Vector3d::Zero(), s.time));
     gatherNodal(displacement_, s.displacement);
     gatherNodal(position_, s.displacement, &reference_);
     gatherNodal(velocity_, s.velocity);

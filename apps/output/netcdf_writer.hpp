@@ -17,10 +17,18 @@
 // element_nodes (1-based nodes along the element), and the integration points as
 // element_point_count + point_element (1-based element).
 //
-// Per record: displacement_/position_/velocity_/reaction_x/_y/_z (time, node), tension_end (time,
+// Per record: wave_elevation (time) at x = y = 0 when the case has a sea,
+// displacement_/position_/velocity_/reaction_x/_y/_z (time, node), tension_end (time,
 // element, end; _FillValue for elements without an axial force), tension_point (time, point),
 // membrane_resultant_max/_min (time, element; _FillValue off membranes), angular_frequency (time,
 // mode) and mode_shape_x/_y/_z (time, mode, node; mass^-1/2) with _FillValue off modes steps.
+//
+// A sea from a spectrum also states its target (the case's units: length, s, rad): sea_spectrum
+// ("jonswap", "pierson_moskowitz" or "table"), sea_spectrum_band (omega_min, omega_max: the
+// synthesised band, rad/s) and either sea_spectrum_Hs, sea_spectrum_Tp, sea_spectrum_gamma (1 for
+// Pierson-Moskowitz; libhydro/waves/wave_spectrum.hpp's formula, normalised to m0 = Hs^2 / 16) or
+// a table's samples sea_spectrum_omega (rad/s) and sea_spectrum_density (length^2 s/rad), linear
+// between them.
 //
 // Each write is flushed to disk at most once a second (NetcdfFile::sync), so a run that is killed
 // keeps every record but those of its last second.
@@ -65,6 +73,8 @@ class NetcdfWriter final : public ResultSink {
     std::array<int, 3> id;
   };
   void defineHeader(const model::Model& model, const Case& c);
+  // The target spectrum of a spectral sea as global attributes (see the header comment).
+  void defineSpectrum(const hydro::WaveSpectrum& s, std::pair<double, double> band);
   Vector3Variable defineVector3(const std::string& name, const std::vector<int>& dimensions,
                                 const std::string& long_name, const std::string& units);
   // A 1-based integer coordinate variable of `dimension` (node, element, mode).
@@ -99,6 +109,8 @@ class NetcdfWriter final : public ResultSink {
   int node_index_ = -1, element_index_ = -1;
   int element_type_ = -1, element_node_count_ = -1, element_nodes_ = -1;
   int step_number_ = -1, step_name_ = -1, time_ = -1, load_factor_ = -1;
+  std::shared_ptr<const hydro::Sea> sea_;  // with a sea: wave_elevation
+  int wave_elevation_ = -1;
   Vector3Variable displacement_, position_, velocity_, reaction_;
   int tension_end_ = -1, tension_point_ = -1, element_point_count_ = -1, point_element_ = -1;
   // Principal membrane resultants per element; defined when the first frame has membranes.

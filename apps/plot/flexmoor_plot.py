@@ -1,34 +1,77 @@
-"""flexmoor plot: time-series figures (PNG) of a flexmoor result, drawn with matplotlib.
+"""flexmoor plot: figures (PNG) of a flexmoor run or study, drawn with matplotlib.
 
-    /usr/bin/python3 flexmoor_plot.py RESULT.nc -o FIGURE.png [--series SPEC ...] [--title TEXT]
-
-SPEC is VARIABLE@INDEX, one panel each, for example
+Of a run's netCDF (DIR/<case>.nc), one figure kind at a time:
+    --series SPEC ...        time series, one panel a SPEC (the default: the largest end tension
+                             and the displacement of the node that moves most)
+    --spectrum SPEC          Welch spectrum (Hann window, half overlap) of one series, against
+                             the target spectrum of the run's sea (its sea_spectrum_* attributes)
+    --shapes T1,T2,...       the deformed lines at the records nearest those times (a plane)
+Of a study's DIR/study.nc:
+    --rao NAME --against P   NAME_amplitude against the parameter P (RAO with --wave-height)
+    --extremes NAME --against P [--group Q]
+                             NAME_max and NAME_mpm against P, one colour per value of Q, the
+                             mean over Q's values as lines
+    --psd NAME               the members' response spectra NAME_psd over `frequency`
+SPEC is VARIABLE@INDEX, for example
     position_x@node=5            x of node 5 (1-based, as in the file's `node` coordinate)
     speed@node=5                 |velocity| of node 5 (derived from velocity_x/_y/_z)
     tension_end@element=1,end=1  axial force at the first end of element 1
-    load_factor                  a record variable without an index
-Without --series: the largest end tension over the elements and the displacement magnitude of
-the node that moves most. Units and names come from the file's CF attributes; the title names
-the case. Records of static steps (which share a time) are drawn as points.
+    wave_elevation               a record variable without an index
+Units and names come from the files' CF attributes. Bad arguments: a message naming what is
+wrong, exit code 2.
 """
 import argparse
 import sys
 import textwrap
 
-import matplotlib
+import numpy as np
+import xarray as xr
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import xarray as xr  # noqa: E402
 
+def pyplot():
+    """matplotlib.pyplot (Agg), imported when a figure is drawn: a refused argument does not wait
+    for it."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot
+
+    return matplotlib.pyplot
+
+
+def fail(message):
+    """Bad input: the message on stderr and exit code 2."""
+    print("flexmoor plot: " + message, file=sys.stderr)
+    sys.exit(2)
+
+
+def number_text(value):
+    return "%g" % value
+
+
+def value_text(value):
+    """A parameter's value as text: %g for numbers, text values as they are."""
+    if isinstance(value, bytes):
+        return value.decode("utf-8", "replace")
+    if np.issubdtype(np.asarray(value).dtype, np.number):
+        return number_text(value)
+    return str(value)
+
+
+# --------------------------------------------------------------------------------------------
+# Series of a run
+# --------------------------------------------------------------------------------------------
 
 def parse_spec(spec):
     name, _, index = spec.partition("@")
     selection = {}
     for part in filter(None, index.split(",")):
         key, _, value = part.partition("=")
-        selection[key.strip()] = int(value)
+        try:
+            selection[key.strip()] = int(value)
+        except ValueError:
+            fail("the index '%s' of %s is not a whole number (expected KEY=N, like node=5)"
+                 % (part, spec))
     return name.strip(), selection
 
 
@@ -37,11 +80,16 @@ def select(ds, name, selection):
     where = {}
     for key, value in selection.items():
         if key == "end":
+            if value not in (1, 2):
+                fail("end=%d in %s: expected end=1 (first) or end=2 (last)" % (value, name))
             where[key] = value - 1  # 'end' has no coordinate: 1 = first, 2 = last
         elif key in ds.indexes:
+            if value not in ds.indexes[key]:
+                fail("%s=%d in %s: no such %s in the file (it has %d to %d)" %
+                     (key, value, name, key, ds.indexes[key].min(), ds.indexes[key].max()))
             where[key] = value
         else:
-            raise SystemExit("flexmoor plot: unknown index '%s' in %s" % (key, name))
+            fail("unknown index '%s' in %s" % (key, name))
     positional = {k: v for k, v in where.items() if k == "end"}
     labelled = {k: v for k, v in where.items() if k != "end"}
     if name == "speed":
@@ -54,10 +102,9 @@ def select(ds, name, selection):
         units = ds[name].attrs.get("units", "")
         long_name = ds[name].attrs.get("long_name", name)
     else:
-        raise SystemExit("flexmoor plot: no variable '%s' in the file" % name)
+        fail("no variable '%s' in the file" % name)
     if set(values.dims) - {"time"}:
-        raise SystemExit("flexmoor plot: %s needs an index for %s" %
-                         (name, ", ".join(sorted(set(values.dims) - {"time"}))))
+        fail("%s needs an index for %s" % (name, ", ".join(sorted(set(values.dims) - {"time"}))))
     where_text = ", ".join("%s %d" % kv for kv in selection.items())
     label = long_name + (" (" + where_text + ")" if where_text else "")
     return values, label, units
@@ -83,16 +130,7 @@ def default_series(ds, name, selection):
             ds.displacement_x.attrs.get("units", ""))
 
 
-def main(argv):
-    parser = argparse.ArgumentParser(prog="flexmoor plot", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("result", help="a flexmoor netCDF result (DIR/<case>.nc)")
-    parser.add_argument("-o", "--output", required=True, help="the PNG to write")
-    parser.add_argument("--series", action="append", default=[], metavar="SPEC")
-    parser.add_argument("--title", help="the figure's title (default: the case's title)")
-    args = parser.parse_args(argv)
-
-    ds = xr.open_dataset(args.result)
+def draw_series(ds, args):
     specs = [parse_spec(s) for s in args.series]
     panels, short_names = [], []
     for name, selection in specs or default_specs(ds):
@@ -103,6 +141,7 @@ def main(argv):
             panels.append(default_series(ds, name, selection))
 
     time_units = ds.time.attrs.get("units", "s")
+    plt = pyplot()
     figure, axes = plt.subplots(len(panels), 1, sharex=True, squeeze=False,
                                 figsize=(8.0, 2.2 + 1.9 * len(panels)), constrained_layout=True)
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
@@ -121,10 +160,467 @@ def main(argv):
         ax.grid(True, alpha=0.3)
         ax.legend(loc="best", fontsize="small", frameon=False)
     axes[-1][0].set_xlabel("time [%s]" % time_units)
+    return figure, "%d panels" % len(panels)
+
+
+# --------------------------------------------------------------------------------------------
+# Spectrum of a run's series against the sea's target
+# --------------------------------------------------------------------------------------------
+
+def welch(x, dt, segment):
+    """libhydro/signal/welch.hpp's estimate: segments of `segment` (even) samples, each less its
+    mean under the Hann window sin^2(pi j / L), overlapping by half; one-sided density per
+    circular frequency S(omega_k) = 2 |X_k|^2 dt / (2 pi sum w^2) (the factor 2 not at k = 0 and
+    L / 2) at omega_k = 2 pi k / (L dt). Returns omega, S and the number of segments."""
+    window = np.sin(np.pi * np.arange(segment) / segment) ** 2
+    power = np.zeros(segment // 2 + 1)
+    starts = range(0, len(x) - segment + 1, segment // 2)
+    for start in starts:
+        piece = x[start:start + segment]
+        power += np.abs(np.fft.rfft((piece - piece.mean()) * window)) ** 2
+    one_sided = np.full(power.size, 2.0)
+    one_sided[[0, -1]] = 1.0
+    density = power * one_sided * dt / (2.0 * np.pi * np.sum(window ** 2) * len(starts))
+    return 2.0 * np.pi * np.arange(power.size) / (segment * dt), density, len(starts)
+
+
+def simpson(f, a, b, n):
+    x = np.linspace(a, b, n + 1)
+    weights = np.ones(n + 1)
+    weights[1:-1:2], weights[2:-1:2] = 4.0, 2.0
+    return np.sum(weights * f(x)) * (b - a) / n / 3.0
+
+
+def jonswap_density(omega, hs, tp, gamma):
+    """libhydro/waves/wave_spectrum.hpp's JONSWAP (gamma 1: Pierson-Moskowitz), S per circular
+    frequency: 5/16 Hs^2 wp^4 w^-5 exp(-5/4 (w / wp)^-4) gamma^exp(-(w - wp)^2 / (2 sigma^2
+    wp^2)), sigma 0.07 at w <= wp and 0.09 above, scaled so that m0 = Hs^2 / 16 with m0 computed
+    as libhydro computes it (Simpson, 20,000 intervals over [0.3, 2] wp and over [2, 60] wp, the
+    w^-5 tail beyond added analytically)."""
+    wp = 2.0 * np.pi / tp
+
+    def shape(w):
+        w = np.asarray(w, dtype=float)
+        safe = np.where(w > 0.0, w, 1.0)
+        pm = (5.0 / 16.0 * hs * hs * wp ** 4 * safe ** -5.0 * np.exp(-1.25 * (safe / wp) ** -4.0))
+        if gamma != 1.0:
+            sigma = np.where(safe <= wp, 0.07, 0.09)
+            pm = pm * gamma ** np.exp(-0.5 * ((safe - wp) / (sigma * wp)) ** 2)
+        return np.where(w > 0.0, pm, 0.0)
+
+    a, b = 0.3 * wp, 60.0 * wp
+    m0 = simpson(shape, a, 2.0 * wp, 20000) + simpson(shape, 2.0 * wp, b, 20000)
+    m0 += shape(b) * b / 4.0
+    return (hs * hs / 16.0 / m0) * shape(omega)
+
+
+def target_spectrum(attrs, length_units, time_units):
+    """The run's target spectrum as a function of omega and a label, or None."""
+    kind = attrs.get("sea_spectrum")
+    if kind == "table":
+        omega = np.atleast_1d(attrs["sea_spectrum_omega"])
+        density = np.atleast_1d(attrs["sea_spectrum_density"])
+        return (lambda w: np.interp(w, omega, density, left=0.0, right=0.0)), "target: table"
+    if kind in ("jonswap", "pierson_moskowitz"):
+        hs, tp = float(attrs["sea_spectrum_Hs"]), float(attrs["sea_spectrum_Tp"])
+        gamma = float(attrs["sea_spectrum_gamma"])
+        name = "JONSWAP" if kind == "jonswap" else "Pierson-Moskowitz"
+        label = "target: %s, Hs %s %s, Tp %s %s" % (name, number_text(hs), length_units,
+                                                    number_text(tp), time_units)
+        if kind == "jonswap":
+            label += ", gamma %s" % number_text(gamma)
+        return (lambda w: jonswap_density(w, hs, tp, gamma)), label
+    return None
+
+
+def last_dynamic_record(ds, values, start):
+    """The series over the run's last step (a dynamic one), from time `start` on, evenly sampled:
+    the records of a step that cut its time step short are interpolated linearly onto the
+    step's own (largest) time step. Returns the samples and their time step."""
+    steps = ds.step_number.values
+    chosen = steps == steps[-1]
+    if start is not None:
+        chosen &= ds.time.values >= start
+    t = ds.time.values[chosen]
+    if t.size < 8 or not np.all(np.diff(t) > 0):
+        fail("the spectrum needs the records of a dynamic last step, 8 or more (got %d records "
+             "of step %d%s)" % (t.size, steps[-1], "" if start is None else " from t = %g" % start))
+    x = np.asarray(values)[chosen]
+    dt = float(np.max(np.diff(t)))
+    if np.ptp(np.diff(t)) > 1e-9 * dt:
+        even = t[0] + dt * np.arange(int(np.floor((t[-1] - t[0]) / dt + 1e-9)) + 1)
+        print("flexmoor plot: the last step's records are not evenly spaced (dt %g to %g): "
+              "interpolated onto dt = %g" % (np.diff(t).min(), np.diff(t).max(), dt),
+              file=sys.stderr)
+        x = np.interp(even, t, x)
+    return x, dt
+
+
+def draw_spectrum(ds, args):
+    name, selection = parse_spec(args.spectrum)
+    values, label, units = select(ds, name, selection)
+    x, dt = last_dynamic_record(ds, values, args.start)
+    time_units = ds.time.attrs.get("units", "s")
+    duration = x.size * dt
+    segment_time = args.segment if args.segment is not None else duration / 4.0
+    segment = 2 * int(round(segment_time / dt / 2.0))
+    if segment < 8 or segment > x.size:
+        fail("--segment %g: expected at least 8 samples and at most the record's %g %s "
+             "(got %d samples of %g %s)" % (segment_time, duration, time_units, segment, dt,
+                                            time_units))
+    omega, density, segments = welch(x, dt, segment)
+    spectral_units = "%s2 %s rad-1" % (units, time_units) if units else "%s rad-1" % time_units
+    plt = pyplot()
+    figure, ax = plt.subplots(figsize=(8.0, 4.8), constrained_layout=True)
+    m0 = np.sum(density) * (omega[1] - omega[0])
+    estimate = "%s: Welch, %d segments of %g %s (4 sqrt(m0) = %s %s)" % (
+        label, segments, segment * dt, time_units, number_text(4.0 * np.sqrt(m0)), units)
+    ax.plot(omega, density, color="C0", linewidth=1.3, label=textwrap.fill(estimate, 70))
+    length_units = ds["position_x"].attrs.get("units", "m") if "position_x" in ds else "m"
+    target = target_spectrum(ds.attrs, length_units, time_units)
+    top = omega[-1]
+    if target is not None:
+        function, target_label = target
+        w = np.linspace(omega[1] * 0.5, omega[-1], 2000)
+        band = np.atleast_1d(ds.attrs.get("sea_spectrum_band", [0.0, omega[-1]]))
+        if units == length_units:  # an elevation or a motion: up to a little past the band
+            twin = ax
+            top = min(omega[-1], 1.25 * band[-1])
+        else:  # another quantity, all its frequencies: the target on its own axis at the right
+            twin = ax.twinx()
+            twin.set_ylabel("target wave spectrum [%s2 %s rad-1]" % (length_units, time_units))
+        twin.plot(w, function(w), color="C3", linewidth=1.6, linestyle="--",
+                  label="%s (%s2 %s rad-1)" % (target_label, length_units, time_units))
+        twin.axvspan(band[0], band[-1], color="C3", alpha=0.06,
+                     label="synthesised band %.3g to %.3g rad/s" % (band[0], band[-1]))
+        twin.set_ylim(bottom=0.0)
+        if twin is not ax:
+            handles, labels = ax.get_legend_handles_labels()
+            more, more_labels = twin.get_legend_handles_labels()
+            ax.legend(handles + more, labels + more_labels, loc="upper right", fontsize="small",
+                      frameon=False)
+    else:
+        print("flexmoor plot: the file states no target spectrum (no sea_spectrum attribute): "
+              "the estimate alone", file=sys.stderr)
+    if target is None or twin is ax:
+        ax.legend(loc="upper right", fontsize="small", frameon=False)
+    ax.set_xlim(0.0, top)
+    ax.set_ylim(bottom=0.0)
+    ax.set_xlabel("circular frequency omega [rad/s]")
+    ax.set_ylabel("spectral density [%s]" % spectral_units)
+    ax.grid(True, alpha=0.3)
+    return figure, "spectrum of %d samples, %d segments" % (x.size, segments)
+
+
+# --------------------------------------------------------------------------------------------
+# Line shapes of a run
+# --------------------------------------------------------------------------------------------
+
+def parse_times(text):
+    try:
+        times = [float(t) for t in text.split(",") if t.strip()]
+    except ValueError:
+        fail("--shapes %s: expected times separated by commas, like 100,200" % text)
+    if not times:
+        fail("--shapes needs at least one time, like --shapes 100,200")
+    return times
+
+
+def element_polylines(ds):
+    """Each element's nodes (indices into `node`) in drawing order: lines along their nodes,
+    membranes closed over their corners; single-node elements left out."""
+    counts = ds.element_node_count.values
+    nodes = ds.element_nodes.values
+    index = {int(n): i for i, n in enumerate(ds.node.values)}
+    types = [str(t) for t in ds.element_type.values] if "element_type" in ds else [""] * len(counts)
+    polylines, at = [], 0
+    for count, kind in zip(counts, types):
+        own = [index[int(n)] for n in nodes[at:at + count]]
+        at += count
+        if count < 2:
+            continue
+        if kind.startswith("membrane"):
+            corners = own[:3] if count in (3, 6) else own[:4]
+            own = corners + corners[:1]
+        polylines.append(own)
+    return polylines
+
+
+def draw_shapes(ds, args):
+    times = parse_times(args.shapes)
+    plane = args.plane
+    if len(plane) != 2 or any(a not in "xyz" for a in plane) or plane[0] == plane[1]:
+        fail("--plane %s: expected two of x, y, z, like xz" % plane)
+    t = ds.time.values
+    time_units = ds.time.attrs.get("units", "s")
+    spacing = np.min(np.diff(t)[np.diff(t) > 0]) if np.any(np.diff(t) > 0) else 0.0
+    records = []
+    for time in times:
+        if time < t.min() - spacing or time > t.max() + spacing:
+            fail("--shapes: the time %g %s is outside the records (%g to %g %s)" %
+                 (time, time_units, t.min(), t.max(), time_units))
+        nearest = np.abs(t - time)
+        records.append(int(np.flatnonzero(nearest == nearest.min())[-1]))  # the last of equals
+    polylines = element_polylines(ds)
+    units = ds["position_x"].attrs.get("units", "")
+    plt = pyplot()
+    from matplotlib.collections import LineCollection
+
+    figure, ax = plt.subplots(figsize=(9.0, 5.5), constrained_layout=True)
+    colours = plt.cm.viridis(np.linspace(0.0, 0.9, len(times)))
+    for record, colour in zip(records, colours):
+        u = ds["position_" + plane[0]].isel(time=record).values
+        v = ds["position_" + plane[1]].isel(time=record).values
+        segments = [np.column_stack([u[p], v[p]]) for p in polylines]
+        step = str(ds.step_name.values[record]) if "step_name" in ds else ""
+        label = "t = %g %s%s" % (t[record], time_units, " (%s)" % step if step else "")
+        ax.add_collection(LineCollection(segments, colors=[colour], linewidths=1.4, label=label))
+        ax.plot(u, v, "o", color=colour, markersize=2.0)
+    ax.autoscale()
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("%s [%s]" % (plane[0], units))
+    ax.set_ylabel("%s [%s]" % (plane[1], units))
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize="small", frameon=False)
+    return figure, "%d shapes" % len(times)
+
+
+# --------------------------------------------------------------------------------------------
+# Figures of a study (DIR/study.nc)
+# --------------------------------------------------------------------------------------------
+
+def study_parameters(ds):
+    return ds.attrs.get("study_parameters", "").split()
+
+
+def require_parameter(ds, name, option):
+    if name is None:
+        fail("%s needs --against PARAMETER (the study's: %s)" %
+             (option, ", ".join(study_parameters(ds)) or "none"))
+    if name not in ds or "member" not in ds[name].dims:
+        fail("no parameter '%s' in the study (its parameters: %s)" %
+             (name, ", ".join(study_parameters(ds)) or "none"))
+    if not np.issubdtype(ds[name].dtype, np.number):
+        fail("%s --against %s: a text parameter cannot be an axis (use it as --group)"
+             % (option, name))
+    return ds[name]
+
+
+def require_statistic(ds, name, statistic):
+    variable = "%s_%s" % (name, statistic)
+    if variable not in ds:
+        collected = ds.attrs.get("collect", "")
+        fail("no variable '%s' in the study (collected: %s; statistics are NAME_max, _min, "
+             "_mean, _std, _amplitude, _mpm, _psd)" % (variable, collected or "nothing"))
+    return ds[variable]
+
+
+def axis_label(variable, fallback):
+    name = variable.attrs.get("long_name", variable.attrs.get("flexmoor_path", fallback))
+    units = variable.attrs.get("units", "")
+    return "%s [%s]" % (name, units) if units else name
+
+
+def parameter_text(ds, member):
+    """'Hs 4 m, seed 2' for one member: its varied parameters."""
+    parts = []
+    for p in study_parameters(ds):
+        value = value_text(ds[p].values[member])
+        units = ds[p].attrs.get("units", "")
+        parts.append("%s %s%s" % (ds[p].attrs.get("flexmoor_path", p).split(".")[-1], value,
+                                  " " + units if units else ""))
+    return ", ".join(parts)
+
+
+def complete(ds):
+    if "status" in ds:
+        return np.asarray(ds.status.values) == 0
+    return np.ones(ds.sizes["member"], dtype=bool)
+
+
+def wave_amplitude(ds, text):
+    """Half the wave height: a parameter's values per member, or a number for all."""
+    if text in ds and "member" in ds[text].dims:
+        return 0.5 * np.asarray(ds[text].values, dtype=float), ds[text].attrs.get("units", "m")
+    try:
+        height = float(text)
+    except ValueError:
+        fail("--wave-height %s: expected a height (a number, in the study's length unit) or a "
+             "parameter (the study's: %s)" % (text, ", ".join(study_parameters(ds)) or "none"))
+    if not height > 0.0:
+        fail("--wave-height %s: expected a height > 0" % text)
+    return np.full(ds.sizes["member"], 0.5 * height), "m"
+
+
+def groups_of(ds, group, option):
+    """Member masks per value of the --group parameter (one group of all without it)."""
+    if group is None:
+        return [(None, np.ones(ds.sizes["member"], dtype=bool))]
+    if group not in ds or "member" not in ds[group].dims:
+        fail("%s --group %s: no such parameter in the study (its parameters: %s)" %
+             (option, group, ", ".join(study_parameters(ds)) or "none"))
+    values = np.asarray(ds[group].values)
+    label = ds[group].attrs.get("flexmoor_path", group).split(".")[-1]
+    units = ds[group].attrs.get("units", "")
+    out = []
+    for v in np.unique(values):
+        text = value_text(v)
+        out.append(("%s %s%s" % (label, text, " " + units if units else ""), values == v))
+    return out
+
+
+def draw_rao(ds, args):
+    parameter = require_parameter(ds, args.against, "--rao")
+    amplitude = require_statistic(ds, args.rao, "amplitude")
+    x = np.asarray(parameter.values, dtype=float)
+    y = np.asarray(amplitude.values, dtype=float)
+    units = amplitude.attrs.get("units", "")
+    ylabel = axis_label(amplitude, args.rao + " amplitude")
+    if args.wave_height is not None:
+        half, height_units = wave_amplitude(ds, args.wave_height)
+        y = y / half
+        ylabel = "RAO of %s [%s/%s]" % (args.rao, units, height_units)
+    ok = complete(ds) & np.isfinite(y)
+    plt = pyplot()
+    figure, ax = plt.subplots(figsize=(8.0, 4.8), constrained_layout=True)
+    for k, (label, members) in enumerate(groups_of(ds, args.group, "--rao")):
+        chosen = ok & members
+        order = np.argsort(x[chosen])
+        ax.plot(x[chosen][order], y[chosen][order], "o-", color="C%d" % (k % 10), linewidth=1.4,
+                markersize=5, label=label or ylabel.split(" [")[0])
+    if (~complete(ds)).any():
+        ax.plot([], [], " ", label="%d members failed (left out)" % (~complete(ds)).sum())
+    ax.set_xlabel(axis_label(parameter, args.against))
+    ax.set_ylabel(ylabel)
+    ax.set_ylim(bottom=0.0)
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize="small", frameon=False)
+    return figure, "response-amplitude curve of %d members" % ok.sum()
+
+
+def draw_extremes(ds, args):
+    parameter = require_parameter(ds, args.against, "--extremes")
+    x = np.asarray(parameter.values, dtype=float)
+    statistics = []
+    for statistic, marker, title in (("max", "o", "maximum"), ("mpm", "^", "MPM")):
+        if "%s_%s" % (args.extremes, statistic) in ds or statistic == "max":
+            variable = require_statistic(ds, args.extremes, statistic)
+            if statistic == "mpm":
+                title = "MPM (%s h, %s)" % (
+                    number_text(float(variable.attrs.get("mpm_duration", np.nan)) / 3600.0),
+                    variable.attrs.get("mpm_fit", "?"))
+            statistics.append((variable, marker, title))
+    ok = complete(ds)
+    plt = pyplot()
+    figure, ax = plt.subplots(figsize=(8.0, 5.0), constrained_layout=True)
+    groups = groups_of(ds, args.group, "--extremes")
+    for s, (variable, marker, title) in enumerate(statistics):
+        y = np.asarray(variable.values, dtype=float)
+        valid = ok & np.isfinite(y)
+        for k, (label, members) in enumerate(groups):
+            chosen = valid & members
+            ax.plot(x[chosen], y[chosen], marker, color="C%d" % (k % 10), markersize=6,
+                    markerfacecolor="none" if s else "C%d" % (k % 10), linestyle="none",
+                    label="%s, %s" % (title, label) if label else title)
+        levels = np.unique(x[valid])
+        means = [y[valid & (x == v)].mean() for v in levels]
+        ax.plot(levels, means, "-" if s == 0 else "--", color="0.25", linewidth=1.5,
+                label="%s, mean%s" % (title, " over the groups" if args.group else ""))
+    ax.set_xlabel(axis_label(parameter, args.against))
+    first = statistics[0][0]
+    ax.set_ylabel("%s [%s]" % (args.extremes, first.attrs.get("units", "")))
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize="small", frameon=False, ncol=2 if len(groups) > 3 else 1)
+    return figure, "extremes of %d members" % ok.sum()
+
+
+def draw_psd(ds, args):
+    psd = require_statistic(ds, args.psd, "psd")
+    if "frequency" not in ds:
+        fail("the study has no 'frequency' axis for %s_psd" % args.psd)
+    omega = np.asarray(ds.frequency.values, dtype=float)
+    ok = complete(ds)
+    plt = pyplot()
+    figure, ax = plt.subplots(figsize=(8.0, 4.8), constrained_layout=True)
+    colours = plt.cm.viridis(np.linspace(0.0, 0.9, max(1, ok.sum())))
+    drawn = 0
+    for member in np.flatnonzero(ok):
+        values = np.asarray(psd.values[member], dtype=float)
+        if not np.isfinite(values).any():
+            continue
+        number = int(ds.member.values[member]) if "member" in ds else member + 1
+        ax.plot(omega, values, color=colours[drawn], linewidth=1.2,
+                label=textwrap.fill("member %d: %s" % (number, parameter_text(ds, member)), 50))
+        drawn += 1
+    if drawn == 0:
+        fail("no complete member has %s_psd" % args.psd)
+    ax.set_xlabel(axis_label(ds.frequency, "circular frequency"))
+    ax.set_ylabel("%s spectral density [%s]" % (args.psd, psd.attrs.get("units", "")))
+    ax.set_xlim(omega.min(), omega.max())
+    ax.set_ylim(bottom=0.0)
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize="small", frameon=False, ncol=2 if drawn > 6 else 1)
+    return figure, "%d response spectra" % drawn
+
+
+# --------------------------------------------------------------------------------------------
+
+RUN_KINDS = {"series": draw_series, "spectrum": draw_spectrum, "shapes": draw_shapes}
+STUDY_KINDS = {"rao": draw_rao, "extremes": draw_extremes, "psd": draw_psd}
+
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message):
+        fail(message)
+
+
+def main(argv):
+    parser = Parser(prog="flexmoor plot", description=__doc__,
+                    formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("result", help="a run's DIR/<case>.nc or a study's DIR/study.nc")
+    parser.add_argument("-o", "--output", required=True, help="the PNG to write")
+    kinds = parser.add_mutually_exclusive_group()
+    kinds.add_argument("--series", action="append", default=[], metavar="SPEC")
+    kinds.add_argument("--spectrum", metavar="SPEC")
+    kinds.add_argument("--shapes", metavar="T1,T2,...")
+    kinds.add_argument("--rao", metavar="NAME")
+    kinds.add_argument("--extremes", metavar="NAME")
+    kinds.add_argument("--psd", metavar="NAME")
+    parser.add_argument("--segment", type=float, help="--spectrum: Welch segment, time units")
+    parser.add_argument("--from", dest="start", type=float,
+                        help="--spectrum: leave out the records before this time")
+    parser.add_argument("--plane", default="xz", help="--shapes: the plane drawn (xz)")
+    parser.add_argument("--against", metavar="PARAMETER")
+    parser.add_argument("--group", metavar="PARAMETER")
+    parser.add_argument("--wave-height", metavar="H|PARAMETER")
+    parser.add_argument("--title", help="the figure's title (default: the file's title)")
+    args = parser.parse_args(argv)
+
+    kind = next((k for k in ("spectrum", "shapes", "rao", "extremes", "psd")
+                 if getattr(args, k) is not None), "series")
+    used = {"segment": "spectrum", "start": "spectrum", "wave_height": "rao",
+            "group": "rao extremes", "against": "rao extremes"}
+    for option, owners in used.items():
+        if getattr(args, option) is not None and kind not in owners.split():
+            fail("--%s is an option of %s, not of --%s" % (
+                option.replace("_", "-").replace("start", "from"),
+                " and ".join("--" + o for o in owners.split()), kind))
+    try:
+        ds = xr.open_dataset(args.result)
+    except (OSError, ValueError) as e:
+        fail("cannot read %s as netCDF (%s)" % (args.result, e))
+    study = "member" in ds.dims
+    if kind in STUDY_KINDS and not study:
+        fail("--%s draws a study's DIR/study.nc; %s has no 'member' dimension (a run's "
+             "netCDF takes --series, --spectrum or --shapes)" % (kind, args.result))
+    if kind in RUN_KINDS and study:
+        fail("%s is a study (a 'member' dimension): it takes --rao, --extremes or --psd"
+             % args.result)
+    figure, what = (STUDY_KINDS if study else RUN_KINDS)[kind](ds, args)
     title = args.title or ds.attrs.get("title", ds.attrs.get("case_name", ""))
     figure.suptitle(title, fontsize="medium")
     figure.savefig(args.output, dpi=130)
-    print("flexmoor plot: wrote %s (%d panels)" % (args.output, len(panels)))
+    print("flexmoor plot: wrote %s (%s)" % (args.output, what))
     return 0
 
 

@@ -15,9 +15,11 @@ namespace flexmoor::app {
 
 std::vector<std::string> plotArguments(const std::string& netcdf, const std::string& png,
                                        const std::vector<std::string>& series,
-                                       const std::string& title) {
+                                       const std::string& title,
+                                       const std::vector<std::string>& figure_options) {
   std::vector<std::string> args = {"/usr/bin/python3", FLEXMOOR_PLOT_SCRIPT, netcdf, "-o", png};
   for (const std::string& s : series) args.insert(args.end(), {"--series", s});
+  args.insert(args.end(), figure_options.begin(), figure_options.end());
   if (!title.empty()) args.insert(args.end(), {"--title", title});
   return args;
 }

@@ -11,10 +11,12 @@
 namespace flexmoor::app {
 
 // The command line of apps/plot/flexmoor_plot.py under Debian's interpreter (its matplotlib and
-// xarray belong to it): `flexmoor plot` hands over to it, and drawFigure runs it.
+// xarray belong to it): `flexmoor plot` hands over to it, and drawFigure runs it. figure_options
+// are the plot's other options as given ("--spectrum", "wave_elevation", ...), checked by it.
 std::vector<std::string> plotArguments(const std::string& netcdf, const std::string& png,
                                        const std::vector<std::string>& series,
-                                       const std::string& title);
+                                       const std::string& title,
+                                       const std::vector<std::string>& figure_options = {});
 
 // Draws `figure` of `netcdf` into `png`. Returns false, saying why on `diag`, when it could not
 // (no /usr/bin/python3 or matplotlib, the plot failed); the run's results stand either way.

@@ -34,10 +34,14 @@ class WaveSpectrum {
   double moment(int n, double lo, double hi) const;
   // The frequency range a table covers; [0, inf) for the formulas.
   std::pair<double, double> support() const;
+  // A table's (omega, S) samples; empty for the formulas.
+  const std::vector<std::pair<double, double>>& samples() const { return samples_; }
+  bool isTable() const { return !samples_.empty(); }
+  // The formulas' peak enhancement gamma (1: Pierson-Moskowitz).
+  double peakEnhancement() const { return gamma_; }
 
  private:
   double shape(double omega) const;  // unnormalised
-  bool isTable() const { return !samples_.empty(); }
   double hs_ = 0.0, omega_p_ = 0.0, gamma_ = 1.0, scale_ = 1.0;
   std::vector<std::pair<double, double>> samples_;  // a table's (omega, S)
 };

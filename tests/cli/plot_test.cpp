@@ -3,8 +3,6 @@
 // series it cannot find.
 #include <gtest/gtest.h>
 
-#include <cstdint>
-#include <fstream>
 #include <string>
 
 #include "tests/support/cli_run.hpp"
@@ -14,20 +12,7 @@ namespace {
 using flexmoor::test::flexmoor;
 
 flexmoor::test::CliRun plot(const std::string& args) { return flexmoor("plot " + args); }
-
-// Width and height from a PNG's IHDR chunk (big-endian at bytes 16..23), 0 if not a PNG.
-std::pair<uint32_t, uint32_t> pngSize(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  unsigned char header[24] = {};
-  in.read(reinterpret_cast<char*>(header), sizeof header);
-  const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (!in || !std::equal(signature, signature + 8, header)) return {0, 0};
-  const auto word = [&](int at) {
-    return uint32_t(header[at]) << 24 | uint32_t(header[at + 1]) << 16 |
-           uint32_t(header[at + 2]) << 8 | uint32_t(header[at + 3]);
-  };
-  return {word(16), word(20)};
-}
+using flexmoor::test::pngSize;
 
 TEST(Plot, DrawsChosenSeriesOfARunAsAPng) {
   const auto dir = flexmoor::test::scratch("plot");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -15,13 +16,16 @@ namespace flexmoor::test {
 namespace fs = std::filesystem;
 
 CliRun flexmoor(const std::string& args) {
+  return command(std::string(FLEXMOOR_BINARY) + " " + args);
+}
+
+CliRun command(const std::string& line) {
   char errors[] = "/tmp/flexmoor-cli-stderr-XXXXXX";
   const int fd = mkstemp(errors);
   close(fd);
-  const std::string command =
-      std::string(FLEXMOOR_BINARY) + " " + args + " 2>" + std::string(errors);
+  const std::string redirected = line + " 2>" + std::string(errors);
   CliRun r{0, "", ""};
-  FILE* pipe = popen(command.c_str(), "r");
+  FILE* pipe = popen(redirected.c_str(), "r");
   char buffer[4096];
   while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
   const int status = pclose(pipe);
@@ -30,6 +34,20 @@ CliRun flexmoor(const std::string& args) {
   r.output += r.errors;
   fs::remove(errors);
   return r;
+}
+
+// Width and height are big-endian at bytes 16..23, after the signature and IHDR's header.
+std::pair<uint32_t, uint32_t> pngSize(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char header[24] = {};
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (!in || !std::equal(signature, signature + 8, header)) return {0, 0};
+  const auto word = [&](int at) {
+    return uint32_t(header[at]) << 24 | uint32_t(header[at + 1]) << 16 |
+           uint32_t(header[at + 2]) << 8 | uint32_t(header[at + 3]);
+  };
+  return {word(16), word(20)};
 }
 
 std::string readFile(const fs::path& p) {

@@ -1,7 +1,9 @@
 #pragma once
 // Running the flexmoor command from a test, as a user would, and reading what it leaves on disk.
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace flexmoor::test {
 
@@ -13,6 +15,12 @@ struct CliRun {
 
 // Runs `flexmoor ARGS` (the binary built with the tests) and collects its output and exit code.
 CliRun flexmoor(const std::string& args);
+
+// Runs a shell command line (`/usr/bin/python3 ...`) the same way.
+CliRun command(const std::string& line);
+
+// Width and height of a PNG from its IHDR chunk; {0, 0} when the file is not a PNG.
+std::pair<uint32_t, uint32_t> pngSize(const std::filesystem::path& path);
 
 std::string readFile(const std::filesystem::path& p);
 

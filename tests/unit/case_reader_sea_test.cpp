@@ -217,6 +217,89 @@ TEST(CaseReaderSea, NetcdfRecordsTheSeedAndRepeatPeriod) {
   EXPECT_NEAR(period, 50.0 * 8.0 / 3.5, 1e-12);
 }
 
+// The run's netCDF states the target spectrum (what `flexmoor plot --spectrum` draws) and the
+// incident elevation at x = y = 0: JONSWAP Hs 2 m, Tp 8 s, gamma 3.3 (the default), band
+// [0.5, 4] wp as given; a table's samples as written (0.05 Hz -> 0.1 pi rad/s, S / 2 pi);
+// wave_elevation at each record's time equal to the case's Sea::elevation there (reference: the
+// same call; tolerance 1e-15 m absolute, the values are the same doubles).
+TEST(CaseReaderSea, NetcdfStatesTheTargetSpectrumAndTheElevation) {
+  const auto dir = test::scratch("sea-netcdf-spectrum");
+  const auto run = [&](const std::string& name, const std::string& waves) {
+    const std::string path = (dir / (name + ".yaml")).string();
+    std::ofstream(path) << caseWith(
+        waves, "  - static: {name: s}\n  - dynamic: {name: d, dt: 0.05 s, steps: 6}\n");
+    const auto r =
+        test::flexmoor("run " + path + " -o " + (dir / name).string() + " --no-vtk --no-figure");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    int file = -1;
+    EXPECT_EQ(nc_open((dir / name / (name + ".nc")).c_str(), NC_NOWRITE, &file), NC_NOERR);
+    return std::pair{file, readCase(path)};
+  };
+  const auto text = [](int file, const char* name) {
+    size_t n = 0;
+    EXPECT_EQ(nc_inq_attlen(file, NC_GLOBAL, name, &n), NC_NOERR) << name;
+    std::string value(n, '\0');
+    EXPECT_EQ(nc_get_att_text(file, NC_GLOBAL, name, value.data()), NC_NOERR) << name;
+    return value;
+  };
+  const auto numbers = [](int file, const char* name) {
+    size_t n = 0;
+    EXPECT_EQ(nc_inq_attlen(file, NC_GLOBAL, name, &n), NC_NOERR) << name;
+    std::vector<double> values(n);
+    EXPECT_EQ(nc_get_att_double(file, NC_GLOBAL, name, values.data()), NC_NOERR) << name;
+    return values;
+  };
+  const auto [jonswap, c] = run("jonswap", R"(waves:
+  spectrum: {type: jonswap, Hs: 2 m, Tp: 8 s}
+  components: 50
+  discretisation: equal
+  seed: 77
+)");
+  const double wp = 2.0 * kPi / 8.0;
+  EXPECT_EQ(text(jonswap, "sea_spectrum"), "jonswap");
+  EXPECT_EQ(numbers(jonswap, "sea_spectrum_Hs"), std::vector<double>{2.0});
+  EXPECT_NEAR(numbers(jonswap, "sea_spectrum_Tp")[0], 8.0, 1e-14);
+  EXPECT_EQ(numbers(jonswap, "sea_spectrum_gamma"), std::vector<double>{3.3});
+  const std::vector<double> band = numbers(jonswap, "sea_spectrum_band");
+  ASSERT_EQ(band.size(), 2u);
+  EXPECT_NEAR(band[0], 0.5 * wp, 1e-15);
+  EXPECT_NEAR(band[1], 4.0 * wp, 1e-15);
+  int time = -1, eta = -1;
+  ASSERT_EQ(nc_inq_varid(jonswap, "time", &time), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(jonswap, "wave_elevation", &eta), NC_NOERR);
+  int time_dimension = -1;
+  size_t records = 0;
+  ASSERT_EQ(nc_inq_dimid(jonswap, "time", &time_dimension), NC_NOERR);
+  ASSERT_EQ(nc_inq_dimlen(jonswap, time_dimension, &records), NC_NOERR);
+  ASSERT_EQ(records, 7u);  // the static step and 6 dynamic ones
+  std::vector<double> t(records), e(records);
+  ASSERT_EQ(nc_get_var_double(jonswap, time, t.data()), NC_NOERR);
+  ASSERT_EQ(nc_get_var_double(jonswap, eta, e.data()), NC_NOERR);
+  EXPECT_GT(std::abs(e.back()), 0.0);
+  for (size_t i = 0; i < t.size(); ++i)
+    EXPECT_NEAR(e[i], c.sea->elevation(Eigen::Vector3d::Zero(), t[i]), 1e-15) << t[i];
+  nc_close(jonswap);
+
+  const auto [table, unused] = run("table", R"(waves:
+  spectrum:
+    type: table
+    of: frequency
+    table: [[0.05 Hz, 0 m^2/Hz], [0.1 Hz, 4 m^2/Hz], [0.2 Hz, 0 m^2/Hz]]
+  components: 50
+  discretisation: equal
+  seed: 77
+)");
+  EXPECT_EQ(text(table, "sea_spectrum"), "table");
+  const std::vector<double> omega = numbers(table, "sea_spectrum_omega"),
+                            density = numbers(table, "sea_spectrum_density");
+  ASSERT_EQ(omega.size(), 3u);
+  ASSERT_EQ(density.size(), 3u);
+  EXPECT_NEAR(omega[1], 2.0 * kPi * 0.1, 1e-15);
+  EXPECT_NEAR(density[1], 4.0 / (2.0 * kPi), 1e-15);
+  EXPECT_NE(nc_inq_attlen(table, NC_GLOBAL, "sea_spectrum_Hs", nullptr), NC_NOERR);
+  nc_close(table);
+}
+
 // The issue's example syntax reads, and a time step that does not resolve the sea's shortest
 // component (the band's top, 4 wp: 2.5 s at Tp 10 s) is warned of with that period.
 TEST(CaseReaderSea, WarnsOfATimeStepTooLongForTheBand) {
