@@ -7,7 +7,7 @@ namespace flexmoor::hydro {
 
 void Sea::addComponent(const WaveComponent& c) {
   components_.push_back(c);
-  terms_.push_back(ComponentTerms::of(c, water_.depth, water_.density, water_.gravity));
+  table_.add(ComponentTerms::of(c, water_.depth, water_.density, water_.gravity));
   if (front_) fronts_.push_back(componentFront(*front_, c, water_.depth, water_.gravity));
 }
 
@@ -18,45 +18,31 @@ void Sea::setFront(const WaveFront& front) {
     fronts_.push_back(componentFront(front, c, water_.depth, water_.gravity));
 }
 
-Envelope Sea::envelope(int c, const Eigen::Vector3d& x, double t) const {
-  if (!front_) return {};
-  const Eigen::Vector3d& d = terms_[c].direction;
-  return frontEnvelope(fronts_[c], x.x() * d.x() + x.y() * d.y(), t);
-}
-
-double Sea::phases(const Eigen::Vector3d& x, double t, std::vector<Phase>& out,
+// The components' phases and envelopes at x, t into s (the front's per component along its
+// heading, times the ramp's), and the elevation with its gradient.
+double Sea::phases(const Eigen::Vector3d& x, double t, ComponentScratch& s,
                    Eigen::Vector3d* elevation_gradient) const {
-  out.resize(terms_.size());
+  componentPhases(table_, x, t, s);
   const Envelope ramp = ramp_ ? rampEnvelope(*ramp_, t) : Envelope();
-  double eta = 0.0;
-  for (std::size_t i = 0; i < terms_.size(); ++i) {
-    const ComponentTerms& c = terms_[i];
-    Phase& p = out[i];
-    const double th = c.theta(x, t);
-    p.cos_th = std::cos(th);
-    p.sin_th = std::sin(th);
-    p.envelope = envelope(static_cast<int>(i), x, t);
-    if (ramp_) p.envelope = product(p.envelope, ramp);
-    const double e = p.envelope.value;
-    eta += e * c.amplitude * p.cos_th;
-    if (elevation_gradient) {
-      // d/dx of E a cos(theta): the ramp's slope along the heading and the phase's k.
-      elevation_gradient->x() +=
-          c.amplitude * (p.envelope.slope * c.direction.x() * p.cos_th - e * c.kx * p.sin_th);
-      elevation_gradient->y() +=
-          c.amplitude * (p.envelope.slope * c.direction.y() * p.cos_th - e * c.ky * p.sin_th);
-    }
+  for (std::size_t i = 0; i < table_.size(); ++i) {
+    Envelope e = ramp;
+    if (front_)
+      e = product(frontEnvelope(fronts_[i], x.x() * table_.dx[i] + x.y() * table_.dy[i], t), ramp);
+    s.value[i] = e.value;
+    s.rate[i] = e.rate;
+    s.slope[i] = e.slope;
+    s.rate_slope[i] = e.rate_slope;
   }
-  return eta;
+  return elevationSum(table_, s, elevation_gradient);
 }
 
 double Sea::elevation(const Eigen::Vector3d& x, double t) const {
-  thread_local std::vector<Phase> scratch;
+  thread_local ComponentScratch scratch;
   return phases(x, t, scratch, nullptr);
 }
 
 FluidPoint Sea::evaluate(const Eigen::Vector3d& x, double t, FluidGradient* gradient) const {
-  thread_local std::vector<Phase> scratch;
+  thread_local ComponentScratch scratch;
   FluidPoint p;
   if (gradient) *gradient = FluidGradient();
   p.elevation = phases(x, t, scratch, gradient ? &gradient->elevation : nullptr);
@@ -80,11 +66,7 @@ FluidPoint Sea::evaluate(const Eigen::Vector3d& x, double t, FluidGradient* grad
     }
   }
   LinearKinematics k;
-  for (std::size_t i = 0; i < terms_.size(); ++i) {
-    const Phase& ph = scratch[i];
-    if (ph.envelope.value == 0.0 && ph.envelope.rate == 0.0) continue;  // ahead of the front
-    addComponentKinematics(terms_[i], z, ph.cos_th, ph.sin_th, ph.envelope, gradient != nullptr, k);
-  }
+  kinematicsSum(table_, scratch, z, gradient != nullptr, k);
   const double rho_g = water_.density * water_.gravity;
   p.velocity = k.velocity + current_.velocity(z);
   p.acceleration = k.acceleration;

@@ -9,13 +9,15 @@
 //
 // What of each component does not change with the point and the time (k cos beta, k sin beta,
 // the depth factors, the front's speed and ramp) is computed once as components are added, so a
-// point costs one sincos and one exp per component, with its gradient or without.
+// point costs one sincos and one exp per component, with its gradient or without, taken over
+// all components at once (component_sums.hpp).
 #include <Eigen/Core>
 #include <optional>
 #include <vector>
 
 #include "libhydro/water/current_profile.hpp"
 #include "libhydro/water/water.hpp"
+#include "libhydro/waves/component_sums.hpp"
 #include "libhydro/waves/time_ramp.hpp"
 #include "libhydro/waves/wave_component.hpp"
 #include "libhydro/waves/wave_front.hpp"
@@ -67,20 +69,14 @@ class Sea {
   }
 
  private:
-  // A component's phase and envelope at one point and time.
-  struct Phase {
-    double cos_th, sin_th;
-    Envelope envelope;
-  };
-  Envelope envelope(int c, const Eigen::Vector3d& x, double t) const;
-  // The phases of every component into `phases`, and the elevation with its gradient.
-  double phases(const Eigen::Vector3d& x, double t, std::vector<Phase>& phases,
+  // The phases and envelopes of every component into `s`, and the elevation with its gradient.
+  double phases(const Eigen::Vector3d& x, double t, ComponentScratch& s,
                 Eigen::Vector3d* elevation_gradient) const;
   FluidPoint evaluate(const Eigen::Vector3d& x, double t, FluidGradient* gradient) const;
 
   Water water_;
   std::vector<WaveComponent> components_;
-  std::vector<ComponentTerms> terms_;  // one per component
+  ComponentTable table_;  // the components' terms
   std::optional<WaveFront> front_;
   std::vector<ComponentFront> fronts_;  // one per component when there is a front
   std::optional<TimeRamp> ramp_;

@@ -44,7 +44,7 @@ struct ComponentTerms {
   }
 };
 
-// The linear kinematics of a sum of components at one point (z <= 0 below the mean level), and
+// The linear kinematics of a sum of components at one point (component_sums.hpp) (z <= 0 below the mean level), and
 // their partial derivatives: horizontal ones at fixed z (columns x, y; the envelope's slope
 // included) and the one in z.
 struct LinearKinematics {
@@ -64,11 +64,5 @@ struct LinearKinematics {
 struct Envelope {
   double value = 1.0, rate = 0.0, slope = 0.0, rate_slope = 0.0;
 };
-
-// Adds the component's kinematics at depth z (z <= 0) with cos(theta), sin(theta) given, scaled
-// by the envelope (its rate keeps the acceleration du/dt of the velocity), to `out`; with
-// `gradients` also their partial derivatives.
-void addComponentKinematics(const ComponentTerms& c, double z, double cos_th, double sin_th,
-                            const Envelope& e, bool gradients, LinearKinematics& out);
 
 }  // namespace flexmoor::hydro
