@@ -273,6 +273,17 @@ Study readStudy(const std::string& path) {
       if (auto spec = readCollect(in, items[i], itemPath("collect", i), names))
         study.collect.push_back(std::move(*spec));
   }
+  const CollectSpec* first_spectrum = nullptr;  // study.nc has one frequency axis
+  for (const CollectSpec& c : study.collect) {
+    if (!c.segment) continue;
+    if (!first_spectrum)
+      first_spectrum = &c;
+    else if (*c.segment != *first_spectrum->segment)
+      diag.error(c.line, c.path + ".spectrum.segment: not the segment of " + first_spectrum->path +
+                             " (got " + formatNumber(*c.segment) + " s, expected " +
+                             formatNumber(*first_spectrum->segment) +
+                             " s: study.nc has one frequency axis)");
+  }
   if (base) {
     const YAML::Node none;
     const auto axes = readGrid(diag, grid ? *grid : none, base->root, study.base_case);
