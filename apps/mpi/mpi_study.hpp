@@ -2,8 +2,9 @@
 // A study under mpirun (OpenMPI): the members spread over the ranks, member i to rank
 // (i - 1) mod K; each rank runs its own one at a time (in a worker process, as locally:
 // member_pool.hpp), then every rank waits at a barrier and rank 0 writes study.nc from the
-// members' files (DIR on a file system every rank sees). Built only with FLEXMOOR_MPI; MPI is
-// initialised here only, so that `flexmoor run` and a local study never start it.
+// members' files (DIR on a file system every rank sees). Built only with FLEXMOOR_MPI. The MPI
+// calls are in the module libflexmoor_mpi.so (mpi_ranks.hpp), loaded here only, so that
+// `flexmoor run` and a local study neither load libmpi nor start MPI.
 #include <ostream>
 #include <string>
 
