@@ -62,9 +62,19 @@ std::optional<Study> readNamedStudy(const std::string& path) {
   return std::nullopt;
 }
 
+// The path of a case or study named on the command line; the name itself when there is none
+// (the reader then says so).
+std::string namedPath(const std::string& name) {
+  try {
+    return resolveCasePath(name);
+  } catch (const std::exception&) {
+    return name;
+  }
+}
+
 int check(const std::string& name) {
-  if (isStudyFile(name)) {
-    const std::optional<Study> s = readNamedStudy(name);
+  if (isStudyFile(namedPath(name))) {
+    const std::optional<Study> s = readNamedStudy(namedPath(name));
     if (!s) return kBadInput;
     std::cout << s->file << ": valid study (" << s->members.size() << " members of " << s->base_case
               << ", " << s->collect.size() << " collected)\n";
@@ -94,7 +104,7 @@ int study(const std::string& file, const StudyOptions& options) {
   if (launchedByMpi())
     return runStudyUnderMpi(file, options.output_dir, options.workers, std::cout);
 #endif
-  const std::optional<Study> s = readNamedStudy(file);
+  const std::optional<Study> s = readNamedStudy(namedPath(file));
   if (!s) return kBadInput;
   try {
     return runStudy(*s, options, std::cout);
@@ -155,7 +165,10 @@ int main(int argc, char** argv) {
   StudyOptions study_options;
   CLI::App* study_command = app.add_subcommand("study", cli::kStudySummary);
   study_command->footer(cli::kStudyDetails);
-  study_command->add_option("STUDY", study_file, "a study file")->required()->type_name("");
+  study_command
+      ->add_option("STUDY", study_file, "a study file, or the name of a study under cases/")
+      ->required()
+      ->type_name("");
   study_command->add_option("-o,--output", study_options.output_dir, "write the study into DIR")
       ->required()
       ->type_name("DIR");

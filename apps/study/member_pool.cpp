@@ -59,19 +59,24 @@ std::string formatSeconds(double s) {
 
 int runMemberPool(const Study& study, const std::vector<const StudyMember*>& todo,
                   const std::string& dir, int workers, const PoolProgress& progress) {
-  const Clock::time_point start = Clock::now();
-  std::map<pid_t, const StudyMember*> running;
+  struct Worker {
+    const StudyMember* member;
+    Clock::time_point start;
+  };
+  std::map<pid_t, Worker> running;
   size_t next = 0;
   int done = 0, failed = 0;
+  double member_seconds = 0.0;  // the wall time of the members finished, summed
+  // The time left: the members not started and half of those running, at the mean time a
+  // member took so far, on `workers` at once.
   const auto report = [&](const std::string& event) {
     if (!progress.out) return;
     const int finished = done + failed;
-    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     std::string left = "time left unknown";
-    if (finished > 0)
-      left = "about " +
-             formatSeconds(elapsed / finished * static_cast<double>(todo.size() - finished)) +
-             " left";
+    if (finished > 0) {
+      const double waiting = static_cast<double>(todo.size() - next) + 0.5 * running.size();
+      left = "about " + formatSeconds(member_seconds / finished * waiting / workers) + " left";
+    }
     *progress.out << progress.label << "study: " << event << "; " << progress.skipped + done
                   << " of " << progress.total << " done (" << progress.skipped << " before), "
                   << running.size() << " running, " << failed << " failed, " << left << std::endl;
@@ -91,7 +96,7 @@ int runMemberPool(const Study& study, const std::vector<const StudyMember*>& tod
         continue;
       }
       if (pid == 0) work(study, m, dir);
-      running[pid] = &m;
+      running[pid] = {&m, Clock::now()};
     }
     if (running.empty()) continue;
     int wait_status = 0;
@@ -102,7 +107,8 @@ int runMemberPool(const Study& study, const std::vector<const StudyMember*>& tod
     }
     const auto it = running.find(pid);
     if (it == running.end()) continue;
-    const StudyMember& m = *it->second;
+    const StudyMember& m = *it->second.member;
+    member_seconds += std::chrono::duration<double>(Clock::now() - it->second.start).count();
     running.erase(it);
     const MemberOutcome outcome =
         outcomeOf(wait_status, memberDirectory(dir, m.index) + "/errors.log");
