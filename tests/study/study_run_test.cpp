@@ -1,10 +1,18 @@
 // `flexmoor study` end to end on the oscillator of study_cases.hpp: members on worker
 // processes, a member that fails on purpose, resuming, study.nc as xarray reads it, and the
 // statistics of the released mass against their closed forms.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <thread>
 
 #include "tests/study/study_cases.hpp"
 #include "tests/study/study_netcdf.hpp"
@@ -52,6 +60,46 @@ TEST(StudyRun, AFailingMemberLeavesTheOthersComplete) {
   EXPECT_NE(textRow(out / "study.nc", "error", 1).find("exit code 3"), std::string::npos);
   EXPECT_EQ(textRow(out / "study.nc", "error", 0), "");
   EXPECT_NE(r.output.find("1 failed"), std::string::npos) << r.output;  // progress
+}
+
+// The first child process of `pid` (from /proc), or 0 while there is none.
+pid_t firstChild(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/task/" + std::to_string(pid) + "/children");
+  pid_t child = 0;
+  return in >> child ? child : 0;
+}
+
+// A worker killed by a signal (as by the kernel's OOM killer or a user): its member is failed
+// with the signal's name, and the study goes on to the next member. Member 1 would run 400,000
+// time steps; on one worker it is killed as soon as its worker exists.
+TEST(StudyRun, AKilledWorkerIsRecordedAndTheOthersRun) {
+  const fs::path dir = studyDir("killed", "grid:\n  steps.1.dynamic.steps: [400000, 400]\n");
+  const std::string study = (dir / "study.yaml").string(), out = (dir / "out").string();
+  const std::string log = (dir / "study.log").string();
+  std::vector<std::string> args = {FLEXMOOR_BINARY, "study", study, "-o", out, "-j", "1"};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT, 0644);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, argv[0], &files, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&files);
+  pid_t worker = 0;
+  for (int i = 0; i < 2000 && !worker; ++i) {  // up to 20 s for the study's checks
+    worker = firstChild(pid);
+    if (!worker) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_NE(worker, 0);
+  kill(worker, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_EQ(WEXITSTATUS(status), 4) << readFile(log);
+  EXPECT_EQ(intVariable(dir / "out/study.nc", "status"), (std::vector<int>{4, 0}));
+  EXPECT_NE(textRow(dir / "out/study.nc", "error", 0).find("killed by signal 9 (Killed)"),
+            std::string::npos)
+      << textRow(dir / "out/study.nc", "error", 0);
 }
 
 // A rerun skips what is complete (its marker untouched) and runs a member whose value changed.
