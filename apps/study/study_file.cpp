@@ -1,6 +1,7 @@
 #include "apps/study/study_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -66,6 +67,15 @@ std::string joined(const std::vector<std::string>& words) {
   std::string text;
   for (const std::string& w : words) text += (text.empty() ? "" : " ") + w;
   return text;
+}
+
+// A density per circular frequency of a quantity in `units`: "N2 s rad-1", "(m/s)2 s rad-1".
+std::string psdUnits(const std::string& units) {
+  if (units.empty()) return "";
+  const bool word = std::all_of(units.begin(), units.end(), [](char ch) {
+    return std::isalpha(static_cast<unsigned char>(ch));
+  });
+  return (word ? units : "(" + units + ")") + "2 s rad-1";
 }
 
 // The spectra's one axis: L samples of dt a segment.
@@ -187,7 +197,7 @@ int writeStudyFile(const Study& study, const std::string& dir) {
                                            "power spectral density of " + c.name + window +
                                                " (Welch, Hann, half overlap, segment " +
                                                formatNumber(*c.segment) + " s)",
-                                           units.empty() ? "" : "(" + units + ")2 s rad-1");
+                                           psdUnits(units));
         file.putAttribute(id, "_FillValue", NC_FILL_DOUBLE);
         if (!coordinates.empty()) file.putAttribute(id, "coordinates", coordinates);
         outputs.push_back({k, std::nullopt, id});
