@@ -199,6 +199,56 @@ std::optional<CollectSpec> readCollect(Input& in, const YAML::Node& n, const std
   return spec;
 }
 
+// case: the base case, relative to the study file, loaded (its values set per member later).
+std::optional<CaseDocument> readBaseCase(Input& in, const YAML::Node& n,
+                                         const std::string& study_file, Study& study) {
+  const auto name = in.text(n, "case");
+  if (!name) return std::nullopt;
+  const fs::path file = fs::path(study_file).parent_path() / *name;
+  study.base_case = file.lexically_normal().string();
+  if (!fs::is_regular_file(file)) {
+    in.diag.error(n, "case: no such file (got '" + *name + "', " + study.base_case +
+                         ", expected the base case's file, relative to the study)");
+    return std::nullopt;
+  }
+  try {
+    return loadCase(study.base_case);
+  } catch (const CaseError& e) {
+    for (const std::string& m : e.messages())
+      in.diag.error(n, "case: the base case is not valid YAML: " + m);
+  }
+  return std::nullopt;
+}
+
+std::vector<CollectSpec> readCollectList(Input& in, const YAML::Node& n) {
+  std::vector<CollectSpec> collect;
+  std::set<std::string> names;
+  const std::vector<YAML::Node> items = listItems(in.diag, n, "collect");
+  if (items.empty() && n.IsSequence())
+    in.diag.error(n,
+                  "collect: nothing to collect (got an empty list, expected at least one "
+                  "entry)");
+  for (size_t i = 0; i < items.size(); ++i)
+    if (auto spec = readCollect(in, items[i], itemPath("collect", i), names))
+      collect.push_back(std::move(*spec));
+  return collect;
+}
+
+// Every spectrum of one segment: study.nc has one frequency axis.
+void checkSpectrumSegments(Diagnostics& diag, const std::vector<CollectSpec>& collect) {
+  const CollectSpec* first = nullptr;
+  for (const CollectSpec& c : collect) {
+    if (!c.segment) continue;
+    if (!first)
+      first = &c;
+    else if (*c.segment != *first->segment)
+      diag.error(c.line, c.path + ".spectrum.segment: not the segment of " + first->path +
+                             " (got " + formatNumber(*c.segment) + " s, expected " +
+                             formatNumber(*first->segment) +
+                             " s: study.nc has one frequency axis)");
+  }
+}
+
 // Every member's case built and checked; the collect: entries' problems reported for the first
 // member they are found in only.
 void checkMembers(Diagnostics& diag, const Study& study, std::string& case_name) {
@@ -245,45 +295,10 @@ Study readStudy(const std::string& path) {
   const YAML::Node* grid = top.find("grid");
   const YAML::Node* list = top.find("list");
   if (!grid && !list && top.isMap()) diag.error(root, "no members (expected grid:, list: or both)");
-  std::optional<CaseDocument> base;
-  if (case_node) {
-    if (const auto name = in.text(*case_node, "case")) {
-      const fs::path file = fs::path(path).parent_path() / *name;
-      study.base_case = file.lexically_normal().string();
-      if (!fs::is_regular_file(file)) {
-        diag.error(*case_node, "case: no such file (got '" + *name + "', " + study.base_case +
-                                   ", expected the base case's file, relative to the study)");
-      } else {
-        try {
-          base = loadCase(study.base_case);
-        } catch (const CaseError& e) {
-          for (const std::string& m : e.messages())
-            diag.error(*case_node, "case: the base case is not valid YAML: " + m);
-        }
-      }
-    }
-  }
-  std::set<std::string> names;
-  if (collect_node) {
-    const std::vector<YAML::Node> items = listItems(diag, *collect_node, "collect");
-    if (items.empty() && collect_node->IsSequence())
-      diag.error(*collect_node, "collect: nothing to collect (got an empty list, expected at " +
-                                    std::string("least one entry)"));
-    for (size_t i = 0; i < items.size(); ++i)
-      if (auto spec = readCollect(in, items[i], itemPath("collect", i), names))
-        study.collect.push_back(std::move(*spec));
-  }
-  const CollectSpec* first_spectrum = nullptr;  // study.nc has one frequency axis
-  for (const CollectSpec& c : study.collect) {
-    if (!c.segment) continue;
-    if (!first_spectrum)
-      first_spectrum = &c;
-    else if (*c.segment != *first_spectrum->segment)
-      diag.error(c.line, c.path + ".spectrum.segment: not the segment of " + first_spectrum->path +
-                             " (got " + formatNumber(*c.segment) + " s, expected " +
-                             formatNumber(*first_spectrum->segment) +
-                             " s: study.nc has one frequency axis)");
-  }
+  const std::optional<CaseDocument> base =
+      case_node ? readBaseCase(in, *case_node, path, study) : std::nullopt;
+  if (collect_node) study.collect = readCollectList(in, *collect_node);
+  checkSpectrumSegments(diag, study.collect);
   if (base) {
     const YAML::Node none;
     const auto axes = readGrid(diag, grid ? *grid : none, base->root, study.base_case);
