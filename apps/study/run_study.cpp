@@ -6,6 +6,7 @@
 #include <fstream>
 #include <thread>
 
+#include "apps/output/output_lock.hpp"
 #include "apps/run/run_case.hpp"
 #include "apps/study/member_pool.hpp"
 #include "apps/study/member_store.hpp"
@@ -52,6 +53,13 @@ int finishStudy(const Study& study, const std::string& dir, std::ostream& log) {
 }
 
 int runStudy(const Study& study, const StudyOptions& options, std::ostream& log) {
+  std::filesystem::create_directories(options.output_dir);
+  const std::string lock_file =
+      (std::filesystem::path(options.output_dir) / ".study.lock").string();
+  const OutputLock lock(lock_file, options.output_dir + ": another study is running there (" +
+                                       lock_file +
+                                       " is locked); this one is refused: let that one "
+                                       "end or choose another directory with -o");
   const int cores = static_cast<int>(std::thread::hardware_concurrency());
   const int workers = options.workers > 0 ? options.workers : std::max(1, cores);
   runStudyMembers(study, options.output_dir, workers, 0, 1, log);

@@ -28,7 +28,8 @@ int runStudyMembers(const Study& study, const std::string& dir, int workers, int
 // records which and why). Writes study.nc and says where it is.
 int finishStudy(const Study& study, const std::string& dir, std::ostream& log);
 
-// Local: runStudyMembers on every member, then finishStudy.
+// Local: runStudyMembers on every member, then finishStudy, holding DIR/.study.lock (a second
+// study into DIR at once is refused: std::runtime_error).
 int runStudy(const Study& study, const StudyOptions& options, std::ostream& log);
 
 }  // namespace flexmoor::app

@@ -214,5 +214,21 @@ TEST(StudyReader, CheckCommandValidatesAStudy) {
       << refused.errors;
 }
 
+// The named studies of cases/studies/ read, with every member's case built (run by hand:
+// docs/performance.md, "Studies").
+TEST(StudyReader, NamedStudiesAreValid) {
+  for (const char* name : {"oc4-jonswap", "tube-rao"}) {
+    const Study s =
+        app::readStudy(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/studies/" + name + ".yaml");
+    EXPECT_EQ(s.members.size(), 9u) << name;
+  }
+  const Study oc4 =
+      app::readStudy(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/studies/oc4-jonswap.yaml");
+  ASSERT_EQ(oc4.parameters.size(), 3u);
+  EXPECT_EQ(oc4.parameters[0].name, "waves_spectrum_Hs");
+  EXPECT_EQ(oc4.parameters[0].numbers, (std::vector<double>{2, 2, 2, 4, 4, 4, 6, 6, 6}));
+  EXPECT_EQ(oc4.parameters[2].numbers, (std::vector<double>{1, 2, 3, 1, 2, 3, 1, 2, 3}));
+}
+
 }  // namespace
 }  // namespace flexmoor::test

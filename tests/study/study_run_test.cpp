@@ -14,6 +14,7 @@
 #include <fstream>
 #include <thread>
 
+#include "apps/output/output_lock.hpp"
 #include "tests/study/study_cases.hpp"
 #include "tests/study/study_netcdf.hpp"
 #include "tests/support/cli_run.hpp"
@@ -100,6 +101,17 @@ TEST(StudyRun, AKilledWorkerIsRecordedAndTheOthersRun) {
   EXPECT_NE(textRow(dir / "out/study.nc", "error", 0).find("killed by signal 9 (Killed)"),
             std::string::npos)
       << textRow(dir / "out/study.nc", "error", 0);
+}
+
+// A second study into a directory while one runs there is refused, writing nothing.
+TEST(StudyRun, ASecondStudyIntoTheSameDirectoryIsRefused) {
+  const fs::path dir = studyDir("locked", "grid:\n  loads.gravity.g: [10 m/s^2]\n");
+  fs::create_directories(dir / "out");
+  const app::OutputLock held((dir / "out/.study.lock").string(), "held by the test");
+  const CliRun r = runStudy(dir);
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.errors.find("another study is running there"), std::string::npos) << r.errors;
+  EXPECT_FALSE(fs::exists(dir / "out/members"));
 }
 
 // A rerun skips what is complete (its marker untouched) and runs a member whose value changed.
