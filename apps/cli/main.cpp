@@ -89,6 +89,12 @@ int check(const std::string& name) {
 }
 
 int run(const std::string& name, const RunOptions& options) {
+  if (isStudyFile(namedPath(name))) {
+    const std::string how = "flexmoor study " + name + " -o DIR";
+    std::cerr << "flexmoor: " << namedPath(name) << " is a study, not a case (it has case: and "
+              << "collect:); run it with '" << how << "'\n";
+    return kBadInput;
+  }
   const std::optional<Case> c = readNamedCase(name);
   if (!c) return kBadInput;
   try {

@@ -212,6 +212,9 @@ TEST(StudyReader, CheckCommandValidatesAStudy) {
   EXPECT_NE(refused.errors.find("study.yaml:4: member 1 (loads.gravity.g = ten)"),
             std::string::npos)
       << refused.errors;
+  const CliRun run = flexmoor("run " + good.study);  // a study is not a case
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.errors.find("is a study, not a case"), std::string::npos) << run.errors;
 }
 
 // The named studies of cases/studies/ read, with every member's case built (run by hand:
