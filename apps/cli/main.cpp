@@ -106,13 +106,13 @@ int run(const std::string& name, const RunOptions& options) {
 }
 
 int study(const std::string& file, const StudyOptions& options) {
-#ifdef FLEXMOOR_WITH_MPI
-  if (launchedByMpi())
-    return runStudyUnderMpi(file, options.output_dir, options.workers, std::cout);
-#endif
-  const std::optional<Study> s = readNamedStudy(namedPath(file));
-  if (!s) return kBadInput;
   try {
+#ifdef FLEXMOOR_WITH_MPI
+    if (launchedByMpi())
+      return runStudyUnderMpi(namedPath(file), options.output_dir, options.workers, std::cout);
+#endif
+    const std::optional<Study> s = readNamedStudy(namedPath(file));
+    if (!s) return kBadInput;
     return runStudy(*s, options, std::cout);
   } catch (const std::exception& e) {
     std::cerr << "flexmoor: " << e.what() << "\n";
