@@ -174,6 +174,13 @@ std::optional<std::vector<int>> surfaceMembranes(CaseBuilder& b, const YAML::Nod
                                                  const std::string& path);
 void readSteps(CaseBuilder& b, const YAML::Node& n);
 void readSummary(CaseBuilder& b, const YAML::Node& n);
+// One quantity in the form of a summary: entry, as a series over a dynamic step (its `window:`,
+// else the whole step; the last step unless `step:` names another) rather than one value: no
+// `at:` or `stat:`; the keys `other_keys` are the caller's to read (a study's collect:, named
+// `name`, at `path`). The spec's reduction is Max, which carries the window.
+std::optional<SummarySpec> readSeriesQuantity(CaseBuilder& b, const YAML::Node& n,
+                                              const std::string& path, const std::string& name,
+                                              const std::vector<std::string>& other_keys);
 void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp
 // The checks of the built model and its steps that no section's reader can make alone
 // (model_checks.cpp): degenerate elements, free nodes and rigid-body mechanisms, coincident

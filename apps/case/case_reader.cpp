@@ -49,12 +49,29 @@ std::vector<fs::path> caseFiles() {
   return files;
 }
 
+// The entries of `series`, read with their own file's diagnostics.
+void readForeignSeries(CaseBuilder& b, ForeignSeries& series) {
+  b.diag.redirect(series.diag, series.prefix);
+  for (const ForeignSeries::Entry& e : series.entries)
+    series.specs.push_back(readSeriesQuantity(b, e.map, e.path, e.name, e.other_keys));
+  b.diag.redirect(nullptr);
+}
+
 }  // namespace
 
-Case readCase(const std::string& path) {
+Case readCase(const std::string& path) { return readCase(loadCase(path)); }
+
+CaseDocument loadCase(const std::string& path) {
   Diagnostics diag(path);
-  std::optional<NodeTable> node_table;
-  const YAML::Node root = expandScenario(diag, loadCaseDocument(diag, node_table));
+  CaseDocument document{path, {}, {}};
+  document.root = loadCaseDocument(diag, document.node_table);
+  return document;
+}
+
+Case readCase(const CaseDocument& document, ForeignSeries* series) {
+  const std::string& path = document.path;
+  Diagnostics diag(path);
+  const YAML::Node root = expandScenario(diag, document.root);
   diag.throwIfAny();  // a scenario that could not be expanded: its own messages say why
   Case c;
   c.file = path;
@@ -67,7 +84,7 @@ Case readCase(const std::string& path) {
                                                                           {"SI", UnitSystem::SI}})
                   .value_or(UnitSystem::SI);
   CaseBuilder b(diag, c.units, c);
-  b.node_table = std::move(node_table);
+  b.node_table = document.node_table;
   c.name = readName(diag, b.in, top, path);
   if (const YAML::Node* t = top.find("title")) c.title = b.in.text(*t, "title").value_or("");
 
@@ -91,6 +108,7 @@ Case readCase(const std::string& path) {
   if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
   readSummary(b, section("summary"));
   readFigure(b, section("figure"));
+  if (series) readForeignSeries(b, *series);
 
   c.model->numberEquations();
   if (diag.empty()) {

@@ -58,16 +58,53 @@
 // (Case::node_ids maps them back to ids). Element ids (summary `element:`) are 1-based in file
 // order: explicit elements first, then the elements of each line in order; model element i is
 // element id i + 1.
+#include <yaml-cpp/yaml.h>
+
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "apps/case/case.hpp"
+#include "apps/case/diagnostics.hpp"
+#include "apps/case/node_table.hpp"
 
 namespace flexmoor::app {
 
 // Reads and validates a case file; throws CaseError listing every problem.
 Case readCase(const std::string& path);
+
+// A case file's document as read (yaml_load.hpp), its node marks kept, for a reader that sets
+// values in it before the case is built (a study's members). `path` names the file in messages
+// and is where the case's relative file names start.
+struct CaseDocument {
+  std::string path;
+  YAML::Node root;
+  std::optional<NodeTable> node_table;  // the nodes: read by node_table.hpp's fast path
+};
+
+// Throws CaseError when the file cannot be read as YAML.
+CaseDocument loadCase(const std::string& path);
+
+// Series quantities read against the case being built but reported in another file, to its
+// Diagnostics (with `prefix` before each message): a study's collect: entries
+// (readSeriesQuantity of case_builder.hpp). Each entry: its map, its path in that file
+// ("collect[1]"), its name, and the keys the caller reads itself.
+struct ForeignSeries {
+  struct Entry {
+    YAML::Node map;
+    std::string path, name;
+    std::vector<std::string> other_keys;
+  };
+  Diagnostics* diag = nullptr;
+  std::string prefix;
+  std::vector<Entry> entries;
+  std::vector<std::optional<SummarySpec>> specs;  // filled: one per entry, nullopt when wrong
+};
+
+// Builds and validates the case of a loaded document, as readCase does the file's; reads
+// `series` (when not null) against it. Throws CaseError for the case's own problems only.
+Case readCase(const CaseDocument& document, ForeignSeries* series = nullptr);
 
 // An existing file as it is; else the case `<name>.yaml` anywhere under FLEXMOOR_CASES_DIR.
 // Throws std::runtime_error naming the available cases when there is none (or more than one).

@@ -20,11 +20,13 @@ CaseError::CaseError(std::vector<std::string> messages)
     : std::runtime_error(joinLines(messages)), messages_(std::move(messages)) {}
 
 void Diagnostics::error(int line, const std::string& what) {
+  if (redirect_) return redirect_->error(line, prefix_ + what);
   problems_.push_back(
       {line, line > 0 ? file_ + ":" + std::to_string(line) + ": " + what : file_ + ": " + what});
 }
 
 void Diagnostics::warning(int line, const std::string& what) {
+  if (redirect_) return redirect_->warning(line, prefix_ + what);
   warnings_.push_back(file_ + (line > 0 ? ":" + std::to_string(line) : std::string()) +
                       ": warning: " + what);
 }

@@ -3,6 +3,7 @@
 // `FILE:LINE: what is wrong (got X, expected Y)`, then throws a single CaseError.
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace YAML {
@@ -35,6 +36,13 @@ class Diagnostics {
   // "FILE:LINE: warning: what", in the order found.
   const std::vector<std::string>& warnings() const { return warnings_; }
 
+  // Until redirect(nullptr), problems and warnings go to `to` instead, each prefixed with
+  // `prefix` (a study's collect: entries, read against a member's case, are the study file's).
+  void redirect(Diagnostics* to, std::string prefix = "") {
+    redirect_ = to;
+    prefix_ = std::move(prefix);
+  }
+
   const std::string& file() const { return file_; }
   bool empty() const { return problems_.empty(); }
   // Every message, ordered by line (problems on one line in the order they were found).
@@ -51,6 +59,8 @@ class Diagnostics {
   std::string file_;
   std::vector<Problem> problems_;
   std::vector<std::string> warnings_;
+  Diagnostics* redirect_ = nullptr;
+  std::string prefix_;
 };
 
 // 1-based line of a node, or 0 when the node carries no position.

@@ -317,6 +317,21 @@ bool readReduction(CaseBuilder& b, Fields& f, int index, SummarySpec& s) {
   return !window || readWindow(b, *window, f.path("window"), span, s);
 }
 
+// A series over the whole of dynamic step `index`, or over its `window:` (the form of
+// readSeriesQuantity): kept as a Max reduction, which carries the window.
+bool readSeriesWindow(CaseBuilder& b, Fields& f, const YAML::Node& at, int index, SummarySpec& s) {
+  if (index < 0) return false;  // no steps: reported by readSteps
+  const StepSpec& step = b.c.steps[index];
+  if (step.kind != StepSpec::Kind::Dynamic) {
+    b.diag.error(at, f.path() + ": a series of a step that is not dynamic (got step '" + step.name +
+                         "', expected the last step, or step:, to be a dynamic step)");
+    return false;
+  }
+  s.reduction = SummarySpec::Reduction::Max;
+  const YAML::Node* window = f.find("window");
+  return !window || readWindow(b, *window, f.path("window"), stepSpan(b, index), s);
+}
+
 // `line: NAME` of length_on_seabed: the line's elements, their submerged weight per length, and
 // its anchor (the lower end, if supported in z), whose share of the laid weight counts as the
 // bed's. The case must have seabed contact.
@@ -365,13 +380,22 @@ bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path
   return true;
 }
 
-std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
-  Fields f(b.diag, e.value, childPath("summary", e.key),
-           {"quantity", "node", "element", "end", "mode", "line", "scale", "unit", "step", "at",
-            "stat", "window"});
+// One quantity of summary: (form Summary), or the series of one (form Series: no at: or stat:,
+// the keys `other_keys` left to the caller).
+enum class Form { Summary, Series };
+
+std::optional<SummarySpec> readQuantity(CaseBuilder& b, const YAML::Node& value,
+                                        const std::string& path, const std::string& name, int line,
+                                        Form form,
+                                        const std::vector<std::string>& other_keys = {}) {
+  std::vector<std::string> keys = {"quantity", "node",  "element", "end",  "mode",
+                                   "line",     "scale", "unit",    "step", "window"};
+  if (form == Form::Summary) keys.insert(keys.end(), {"at", "stat"});
+  keys.insert(keys.end(), other_keys.begin(), other_keys.end());
+  Fields f(b.diag, value, path, keys);
   SummarySpec s;
-  s.name = e.key;
-  s.where = {b.diag.file(), lineOf(e.key_node)};
+  s.name = name;
+  s.where = {b.diag.file(), line};
   const YAML::Node* q = f.require("quantity");
   const auto chosen = q ? b.in.choice(*q, f.path("quantity"), quantities()) : std::nullopt;
   s.scale = b.in.quantityOr(f, "scale", kind::kNumber, Limit::Any, 1.0);
@@ -379,6 +403,11 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   if (const YAML::Node* n = f.find("step")) step = stepRef(b, *n, f.path("step"));
   if (!chosen) return std::nullopt;
   const QuantityInfo info = *chosen;
+  if (form == Form::Series && (info.target == Target::Run || info.target == Target::Mode)) {
+    b.diag.error(*q, f.path("quantity") + ": not a quantity over time (got " + q->Scalar() +
+                         ", expected a quantity of the model's state in a dynamic step)");
+    return std::nullopt;
+  }
   if (!rejectUnused(b, f, q->Scalar(), info.target)) return std::nullopt;
   s.quantity = info.quantity;
   s.component = info.component;
@@ -451,7 +480,9 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
   if (!step) return std::nullopt;
   s.step = *step;
   const int index = *step < 0 ? static_cast<int>(b.c.steps.size()) - 1 : *step;
-  if (!readReduction(b, f, index, s)) return std::nullopt;
+  const bool reduced = form == Form::Summary ? readReduction(b, f, index, s)
+                                             : readSeriesWindow(b, f, value, index, s);
+  if (!reduced) return std::nullopt;
   return s;
 }
 
@@ -459,7 +490,15 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const MapEntry& e) {
 
 void readSummary(CaseBuilder& b, const YAML::Node& n) {
   for (const MapEntry& e : mapEntries(b.diag, n, "summary"))
-    if (auto spec = readQuantity(b, e)) b.c.summary.push_back(std::move(*spec));
+    if (auto spec = readQuantity(b, e.value, childPath("summary", e.key), e.key, lineOf(e.key_node),
+                                 Form::Summary))
+      b.c.summary.push_back(std::move(*spec));
+}
+
+std::optional<SummarySpec> readSeriesQuantity(CaseBuilder& b, const YAML::Node& n,
+                                              const std::string& path, const std::string& name,
+                                              const std::vector<std::string>& other_keys) {
+  return readQuantity(b, n, path, name, lineOf(n), Form::Series, other_keys);
 }
 
 }  // namespace flexmoor::app

@@ -36,7 +36,9 @@ place by a rename when the run ends: the netCDF streams into DIR/<case>.nc.parti
 or killed run never spoils an earlier DIR/<case>.nc; a second run of the case into DIR at once
 is refused (the lock DIR/.<case>.lock).
 'flexmoor plot' draws a figure of a run or a study as a PNG: time series, a spectrum against the
-sea's target, line shapes, response-amplitude curves, extremes and response spectra.
+sea's target, line shapes, response-amplitude curves, extremes and response spectra;
+'flexmoor study' runs a base case under many variations (sea states, seeds, any case value) and
+gathers their statistics.
 
 Exit codes:
   0  done (for check: the case is valid)
@@ -112,9 +114,71 @@ A valid case prints one line (its nodes, elements, equations and steps) on stdou
 Exit codes: 0 the case is valid; 1 usage error; 2 the case is invalid: every problem is listed
 on stderr, one a line, as FILE:LINE: what is wrong (got X, expected Y).
 
+A study file (a YAML file with both case: and collect:, see 'flexmoor study --help') is checked
+as a study: the file itself, then every member's case built and checked.
+
 Examples:
   flexmoor check ex1-suspended-cable-8xL2
   flexmoor check my-mooring.yaml
+  flexmoor check cases/studies/tube-rao.yaml
+)";
+
+inline constexpr const char* kStudySummary =
+    "run a study: one base case under many variations, in parallel or under mpirun";
+
+inline constexpr const char* kStudyDetails = R"(
+A study names a base case, the values to vary by their paths in it, and what to collect from
+every member's run. An example (cases/studies/ has more):
+
+  title: OC4 lines, JONSWAP seas, 3 seeds x 3 sea states
+  case: oc4-jonswap-base.yaml        # the base case, relative to the study file
+  grid:                              # every combination, the last path varying fastest
+    waves.spectrum.Hs: [2 m, 4 m, 6 m]
+    waves.seed: [1, 2, 3]
+  # list: [{waves.spectrum.Hs: 2 m, waves.spectrum.Tp: 7 s}, ...]   members one by one,
+  #   each crossed with the grid when both are given
+  collect:
+    - name: fairlead_tension_1       # a variable name in study.nc
+      quantity: end_tension          # as a summary: entry: quantity, node, element, end, ...
+      element: 12
+      end: last
+      window: {from: 100 s}          # the part of the last dynamic step that counts
+      statistics: [max, min, mean, std, amplitude]   # amplitude = (max - min) / 2
+      spectrum: {segment: 100 s}     # Welch, Hann, half overlap; omitted: no spectrum
+
+A path is the case's keys joined by '.', a list's index 0-based (waves.components.0.period);
+it must be a value the base case gives. Before anything runs, the study and every member's case
+are checked; problems are reported as STUDY:LINE (exit 2), naming the member.
+
+DIR (-o) holds:
+  DIR/study.nc                 one netCDF (CF-1.8) with a member dimension: the varied values
+                               as coordinates (SI), status and error of each member, NAME_max,
+                               NAME_min, NAME_mean, NAME_std (time-weighted over the window, as
+                               a case's summary: statistics), NAME_amplitude, and NAME_psd on one
+                               circular-frequency axis; a failed member's values are _FillValue
+  DIR/members/NNNN/            member NNNN's run: <case>.nc, <case>.summary.json, series.nc
+                               (the collected series over its window), run.log, errors.log,
+                               and `complete` (a hash of the member's case text) or `failed`
+
+Resuming: a rerun into the same DIR skips the members complete with the same case text; a
+member whose values, base case or collect: changed, or that failed, runs again.
+
+Parallel: the members run on -j N worker processes (default: the cores). Processes, not
+threads: netCDF and HDF5 are not thread-safe, and a member that crashes or is killed takes down
+only its worker; it is recorded as failed and the others carry on.
+
+MPI: the same command under mpirun spreads the members over the ranks (member i to rank
+(i - 1) mod K, each rank running its members one at a time); rank 0 writes study.nc when every
+rank is done. DIR must be on a file system every rank sees. As root, OpenMPI needs
+--allow-run-as-root; with more ranks than cores, --oversubscribe.
+
+Exit codes: 0 every member complete; 1 usage error; 2 the study or a member's case is invalid
+(nothing ran); 4 some member failed (study.nc says which and why).
+
+Examples:
+  flexmoor check cases/studies/tube-rao.yaml
+  flexmoor study cases/studies/tube-rao.yaml -o /tmp/rao -j 2
+  mpirun -n 4 flexmoor study cases/studies/oc4-jonswap.yaml -o /shared/oc4
 )";
 
 inline constexpr const char* kCasesSummary = "list the named cases shipped under cases/";

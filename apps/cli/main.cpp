@@ -14,6 +14,11 @@
 #include "apps/cli/help_text.hpp"
 #include "apps/run/draw_figure.hpp"
 #include "apps/run/run_case.hpp"
+#include "apps/study/run_study.hpp"
+#include "apps/study/study_reader.hpp"
+#ifdef FLEXMOOR_WITH_MPI
+#include "apps/mpi/mpi_study.hpp"
+#endif
 
 namespace {
 
@@ -27,7 +32,7 @@ std::string usageFailure(const CLI::App* app, const CLI::Error& e) {
   std::string what = e.what();
   if (chosen.empty()) {  // CLI11 would say only "A subcommand is required"
     const std::vector<std::string> rest = app->remaining();
-    what = "expected a command: run, check, cases or plot" +
+    what = "expected a command: run, check, study, cases or plot" +
            (rest.empty() ? std::string() : " (got '" + rest[0] + "')");
   }
   return command + ": " + what + "\nTry '" + command + " --help'.\n";
@@ -45,7 +50,36 @@ std::optional<Case> readNamedCase(const std::string& name) {
   return std::nullopt;
 }
 
+// The study file, read and checked with every member's case; nullopt after reporting why not.
+std::optional<Study> readNamedStudy(const std::string& path) {
+  try {
+    return readStudy(path);
+  } catch (const CaseError& e) {
+    std::cerr << e.what() << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "flexmoor: " << e.what() << "\n";
+  }
+  return std::nullopt;
+}
+
+// The path of a case or study named on the command line; the name itself when there is none
+// (the reader then says so).
+std::string namedPath(const std::string& name) {
+  try {
+    return resolveCasePath(name);
+  } catch (const std::exception&) {
+    return name;
+  }
+}
+
 int check(const std::string& name) {
+  if (isStudyFile(namedPath(name))) {
+    const std::optional<Study> s = readNamedStudy(namedPath(name));
+    if (!s) return kBadInput;
+    std::cout << s->file << ": valid study (" << s->members.size() << " members of " << s->base_case
+              << ", " << s->collect.size() << " collected)\n";
+    return kSuccess;
+  }
   const std::optional<Case> c = readNamedCase(name);
   if (!c) return kBadInput;
   std::cout << c->file << ": valid (" << c->model->nodeCount() << " nodes, "
@@ -55,10 +89,31 @@ int check(const std::string& name) {
 }
 
 int run(const std::string& name, const RunOptions& options) {
+  if (isStudyFile(namedPath(name))) {
+    const std::string how = "flexmoor study " + name + " -o DIR";
+    std::cerr << "flexmoor: " << namedPath(name) << " is a study, not a case (it has case: and "
+              << "collect:); run it with '" << how << "'\n";
+    return kBadInput;
+  }
   const std::optional<Case> c = readNamedCase(name);
   if (!c) return kBadInput;
   try {
     return runCase(*c, options, std::cout).exit_code;
+  } catch (const std::exception& e) {
+    std::cerr << "flexmoor: " << e.what() << "\n";
+    return kRunFailed;
+  }
+}
+
+int study(const std::string& file, const StudyOptions& options) {
+  try {
+#ifdef FLEXMOOR_WITH_MPI
+    if (launchedByMpi())
+      return runStudyUnderMpi(namedPath(file), options.output_dir, options.workers, std::cout);
+#endif
+    const std::optional<Study> s = readNamedStudy(namedPath(file));
+    if (!s) return kBadInput;
+    return runStudy(*s, options, std::cout);
   } catch (const std::exception& e) {
     std::cerr << "flexmoor: " << e.what() << "\n";
     return kRunFailed;
@@ -112,6 +167,23 @@ int main(int argc, char** argv) {
       ->required()
       ->type_name("");
 
+  std::string study_file;
+  StudyOptions study_options;
+  CLI::App* study_command = app.add_subcommand("study", cli::kStudySummary);
+  study_command->footer(cli::kStudyDetails);
+  study_command
+      ->add_option("STUDY", study_file, "a study file, or the name of a study under cases/")
+      ->required()
+      ->type_name("");
+  study_command->add_option("-o,--output", study_options.output_dir, "write the study into DIR")
+      ->required()
+      ->type_name("DIR");
+  study_command
+      ->add_option("-j,--jobs", study_options.workers,
+                   "run N members at once (default: the cores; 1 per MPI rank)")
+      ->type_name("N")
+      ->check(CLI::PositiveNumber);
+
   CLI::App* cases_command = app.add_subcommand("cases", cli::kCasesSummary);
   cases_command->footer(cli::kCasesDetails);
 
@@ -159,6 +231,7 @@ int main(int argc, char** argv) {
   options.figure = !no_figure;
   if (check_command->parsed()) return check(case_name);
   if (cases_command->parsed()) return listNamedCases();
+  if (study_command->parsed()) return study(study_file, study_options);
   if (plot_command->parsed()) {
     std::vector<std::string> given;
     for (const FigureOption& o : figure_options)

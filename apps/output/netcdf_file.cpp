@@ -87,6 +87,12 @@ void NetcdfFile::putAttribute(int variable, const std::string& name, int value) 
         "writing attribute " + variableName(variable) + ":" + name);
 }
 
+void NetcdfFile::putAttribute(int variable, const std::string& name,
+                              const std::vector<int>& values) {
+  check(nc_put_att_int(id_, variable, name.c_str(), NC_INT, values.size(), values.data()),
+        "writing attribute " + variableName(variable) + ":" + name);
+}
+
 void NetcdfFile::putAttribute(int variable, const std::string& name, double value) {
   check(nc_put_att_double(id_, variable, name.c_str(), NC_DOUBLE, 1, &value),
         "writing attribute " + variableName(variable) + ":" + name);

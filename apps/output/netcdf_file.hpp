@@ -46,6 +46,7 @@ class NetcdfFile {
   // A text attribute of a variable, or of the file for NC_GLOBAL.
   void putAttribute(int variable, const std::string& name, const std::string& value);
   void putAttribute(int variable, const std::string& name, int value);
+  void putAttribute(int variable, const std::string& name, const std::vector<int>& values);
   void putAttribute(int variable, const std::string& name, double value);
   void putAttribute(int variable, const std::string& name, const std::vector<double>& values);
   // Define mode: the variable is written whole in every record, so HDF5 need not fill its

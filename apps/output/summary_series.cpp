@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <optional>
 #include <stdexcept>
 
+#include "apps/output/state_source.hpp"
 #include "apps/output/summary_quantities.hpp"
 #include "libstruct/model/assembler.hpp"
 
@@ -21,38 +20,6 @@ double timeSlack(double t) { return 1e-9 * std::max(1.0, std::abs(t)); }
 double interpolate(double t0, double v0, double t1, double v1, double t) {
   return t1 > t0 ? v0 + (v1 - v0) * (t - t0) / (t1 - t0) : v1;
 }
-
-// One accepted state: what a quantity asks for is computed on the first request and kept for the
-// other quantities of the same state.
-class StateSource : public SummarySource {
- public:
-  StateSource(const model::Assembler& assembler, const model::State& s)
-      : assembler_(assembler), state_(s) {}
-  const model::State& state() const override { return state_; }
-  const model::NodalField& reactions() const override {
-    if (!reactions_) reactions_ = assembler_.reactions(state_);
-    return *reactions_;
-  }
-  const element::ElementResult& element(int e) const override {
-    if (all_) return all_->at(e);
-    auto it = one_.find(e);
-    if (it == one_.end()) it = one_.emplace(e, assembler_.elementResult(state_, e)).first;
-    return it->second;
-  }
-  const std::vector<element::ElementResult>& elements() const override {
-    if (!all_) all_ = assembler_.elementResults(state_);
-    return *all_;
-  }
-  const std::vector<double>& frequencies() const override { return no_frequencies_; }
-
- private:
-  const model::Assembler& assembler_;
-  const model::State& state_;
-  mutable std::optional<model::NodalField> reactions_;
-  mutable std::map<int, element::ElementResult> one_;
-  mutable std::optional<std::vector<element::ElementResult>> all_;
-  const std::vector<double> no_frequencies_;  // a dynamic step has no modes
-};
 
 }  // namespace
 

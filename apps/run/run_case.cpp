@@ -70,6 +70,7 @@ RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
         NetcdfWriter netcdf(files.partialNetcdf(), *c.model, c);
         Simulation simulation(c, log, diag);
         simulation.addSink(netcdf);
+        for (StateObserver* o : options.observers) simulation.addObserver(*o);
         result = simulation.run();
       }
       out.exit_code = result.exit_code;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "apps/case/case.hpp"
+#include "apps/output/state_observer.hpp"
 
 namespace flexmoor::app {
 
@@ -20,6 +21,8 @@ struct RunOptions {
   std::string output_dir;  // empty: results/<case>
   bool vtk = true;         // write DIR/<case>-<step>.vtk for ParaView
   bool figure = true;      // draw DIR/<case>.png when the case has a figure:
+  // See every accepted state of the dynamic steps (a study's series); they must outlive the run.
+  std::vector<StateObserver*> observers;
 };
 
 enum ExitCode { kSuccess = 0, kUsage = 1, kBadInput = 2, kNotConverged = 3, kRunFailed = 4 };

@@ -116,6 +116,7 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
   auto on_step = [&](const model::State& s) {
     ++accepted;
     series.sample(s);
+    for (StateObserver* o : observers_) o->accepted(i, s, *assembler_);
     const bool last = s.time >= end - 1e-9 * std::max(1.0, duration);
     if (accepted % step.output_every == 0 || last) {
       fill(i, step.name, s, streamed);
@@ -130,6 +131,7 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
   solve::TimeIntegrator integrator(*assembler_, step.dynamic, slog_);
   integrator.start(state);
   series.sample(state);
+  for (StateObserver* o : observers_) o->accepted(i, state, *assembler_);
   for (const solve::TimeSegment& segment : step.dynamic.schedule)
     for (int k = 0; k < segment.steps; ++k) integrator.step(state, segment.dt, on_step);
   const solve::DynamicReport& r = integrator.report();

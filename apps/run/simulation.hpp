@@ -13,6 +13,7 @@
 #include "apps/case/case.hpp"
 #include "apps/output/result_frame.hpp"
 #include "apps/output/result_sink.hpp"
+#include "apps/output/state_observer.hpp"
 #include "apps/run/run_case.hpp"
 #include "libstruct/model/assembler.hpp"
 #include "libstruct/solve/solve_log.hpp"
@@ -41,6 +42,8 @@ class Simulation {
   // Every record (each finished step's closing state, a dynamic step's every output_every-th
   // accepted state, and the last converged state of a step that fails) goes to every sink.
   void addSink(ResultSink& sink) { sinks_.push_back(&sink); }
+  // Every accepted state of every dynamic step, its first state included, goes to every observer.
+  void addObserver(StateObserver& observer) { observers_.push_back(&observer); }
 
   // Runs the steps in order from the model's start state (Model::startState). A step that does
   // not converge ends the run with kNotConverged after its last converged state went to the
@@ -71,6 +74,7 @@ class Simulation {
   std::unique_ptr<model::Assembler> assembler_;  // built anew when a step releases supports
   std::vector<Released> released_;               // put back when the run ends
   std::vector<ResultSink*> sinks_;
+  std::vector<StateObserver*> observers_;
   std::map<int, double> over_time_;  // summary index -> value over a dynamic step's time
   solve::SolveLog slog_;
   bool streamed_ = false;  // the last step (a dynamic one) wrote its closing state already

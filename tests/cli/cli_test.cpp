@@ -118,8 +118,8 @@ TEST(Cli, UsageErrorsNameTheArgumentAndExitWith1) {
   const struct {
     std::string args, message;
   } errors[] = {
-      {"", "flexmoor: expected a command: run, check, cases or plot"},
-      {"frob", "flexmoor: expected a command: run, check, cases or plot (got 'frob')"},
+      {"", "flexmoor: expected a command: run, check, study, cases or plot"},
+      {"frob", "flexmoor: expected a command: run, check, study, cases or plot (got 'frob')"},
       {"cases extra", "flexmoor cases: The following argument was not expected: extra"},
       {"check", "flexmoor check: CASE is required"},
       {"check ex1-suspended-cable-8xL2 extra",
