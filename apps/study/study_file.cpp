@@ -12,6 +12,7 @@
 #include "apps/study/member_store.hpp"
 #include "apps/study/series_file.hpp"
 #include "apps/study/study_statistics.hpp"
+#include "libhydro/signal/extremes.hpp"
 #include "libhydro/signal/welch.hpp"
 
 namespace flexmoor::app {
@@ -31,7 +32,8 @@ const std::vector<StatisticInfo>& writtenStatistics() {
       {Statistic::Min, "min", "minimum"},
       {Statistic::Mean, "mean", "mean"},
       {Statistic::Std, "std", "standard deviation"},
-      {Statistic::Amplitude, "amplitude", "amplitude (max - min) / 2"}};
+      {Statistic::Amplitude, "amplitude", "amplitude (max - min) / 2"},
+      {Statistic::Mpm, "mpm", "most probable maximum"}};
   return infos;
 }
 
@@ -48,9 +50,25 @@ double statisticValue(const SeriesStatistics& s, Statistic which) {
     case Statistic::Amplitude:
       return s.amplitude;
     case Statistic::Mpm:
-      break;
+      break;  // mostProbableMaximum: of the record, not of its statistics
   }
   return NC_FILL_DOUBLE;
+}
+
+// The most probable maximum over the spec's duration (libhydro/signal/extremes.hpp) of the
+// series resampled at its median time step; the fill value when the record is too short for
+// the fit (fewer than 30 peaks above the mean, or 10 blocks of 20 zero-crossing periods).
+double mostProbableMaximum(const std::vector<double>& t, const std::vector<double>& v,
+                           const MpmSpec& mpm) {
+  const double dt = medianStep(t, v);
+  if (!(dt > 0.0)) return NC_FILL_DOUBLE;
+  const signal::ExtremeFit fit =
+      mpm.fit == MpmFit::Weibull ? signal::ExtremeFit::Weibull : signal::ExtremeFit::Gumbel;
+  try {
+    return signal::mostProbableMaximum(resampled(t, v, dt), dt, mpm.duration, fit);
+  } catch (const std::invalid_argument&) {
+    return NC_FILL_DOUBLE;
+  }
 }
 
 std::string windowText(const SeriesData::Variable& v, const std::string& time_unit) {
@@ -190,6 +208,11 @@ int writeStudyFile(const Study& study, const std::string& dir) {
                                 std::string(info.long_name) + " of " + c.name + window, units);
         file.putAttribute(id, "_FillValue", NC_FILL_DOUBLE);
         if (!coordinates.empty()) file.putAttribute(id, "coordinates", coordinates);
+        if (info.statistic == Statistic::Mpm && c.mpm) {
+          file.putAttribute(id, "mpm_duration", c.mpm->duration);
+          file.putAttribute(id, "mpm_fit",
+                            std::string(c.mpm->fit == MpmFit::Weibull ? "weibull" : "gumbel"));
+        }
         outputs.push_back({k, info.statistic, id});
       }
       if (c.segment && frequency_dim >= 0) {
@@ -240,6 +263,11 @@ int writeStudyFile(const Study& study, const std::string& dir) {
         for (size_t i = 0; i < n; ++i) {
           if (!series[i]) continue;
           const SeriesData::Variable& v = series[i]->variables[o.collect];
+          const CollectSpec& c = study.collect[o.collect];
+          if (*o.statistic == Statistic::Mpm) {
+            if (c.mpm) values[i] = mostProbableMaximum(series[i]->time, v.values, *c.mpm);
+            continue;
+          }
           try {
             values[i] = statisticValue(seriesStatistics(series[i]->time, v.values), *o.statistic);
           } catch (const std::logic_error&) {  // no window in this member's record: left filled
