@@ -9,32 +9,14 @@
 #include <cmath>
 
 #include "tests/support/cli_run.hpp"
+#include "tests/support/hanging_masses.hpp"
 
 namespace flexmoor::test {
 namespace {
 
 std::string heldMass(const std::string& release) {
-  return R"(units: SI
-nodes:
-  1: [0, 0, 0]
-  2: [0, 0, -1 m]
-  3: [1 m, 0, 0]
-  4: [1 m, 0, -1 m]
-elements:
-  - {type: spring, nodes: [1, 2], stiffness: 1000 N/m}
-  - {type: point_mass, node: 2, mass: 10 kg}
-  - {type: spring, nodes: [3, 4], stiffness: 1000 N/m}
-  - {type: point_mass, node: 4, mass: 10 kg}
-supports:
-  - {nodes: [1, 3], fix: [x, y, z]}
-  - {node: 2, fix: [x, y, z]}
-  - {node: 4, fix: [x, y]}
-loads:
-  gravity: {g: 10 m/s^2}
-steps:
-  - static: {}
-  - dynamic: {dt: 0.00157079632679 s, steps: 200)" +
-         release + R"(}
+  return hangingMassesCase() + R"(  - dynamic: {dt: 0.00157079632679 s, steps: 200)" + release +
+         R"(}
 summary:
   drop: {quantity: displacement_z, node: 2, scale: -1}
   held_force: {quantity: reaction_z, node: 2, step: 1}

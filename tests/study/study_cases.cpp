@@ -2,6 +2,8 @@
 
 #include <fstream>
 
+#include "tests/support/hanging_masses.hpp"
+
 namespace flexmoor::test {
 
 std::filesystem::path writeText(const std::filesystem::path& dir, const std::string& name,
@@ -12,26 +14,10 @@ std::filesystem::path writeText(const std::filesystem::path& dir, const std::str
 }
 
 void writeOscillatorCase(const std::filesystem::path& dir) {
-  writeText(dir, "osc.yaml", R"(units: SI
-nodes:
-  1: [0, 0, 0]
-  2: [0, 0, -1 m]
-  3: [1 m, 0, 0]
-  4: [1 m, 0, -1 m]
-elements:
-  - {type: spring, nodes: [1, 2], stiffness: 1000 N/m}
-  - {type: point_mass, node: 2, mass: 10 kg}
-  - {type: spring, nodes: [3, 4], stiffness: 1000 N/m}
-  - {type: point_mass, node: 4, mass: 10 kg}
-supports:
-  - {nodes: [1, 3], fix: [x, y, z]}
-  - {node: 2, fix: [x, y, z]}
-  - {node: 4, fix: [x, y]}
-loads:
-  gravity: {g: 10 m/s^2}
-steps:
-  - static: {}
-  - dynamic: {dt: 0.00314159265359 s, steps: 400, release: [{node: 2, dofs: [z]}],
+  writeText(
+      dir, "osc.yaml",
+      hangingMassesCase() +
+          R"(  - dynamic: {dt: 0.00314159265359 s, steps: 400, release: [{node: 2, dofs: [z]}],
               tolerance: 1e-8}
 )");
 }
