@@ -3,8 +3,9 @@
 // at a time with SSE2 on any x86-64, its maximum error 4 ulp), about twice as fast as the scalar
 // libm calls an irregular sea makes per component and point (docs/performance.md). Only this
 // file is compiled with -ffast-math (libhydro/CMakeLists.txt): glibc declares the vector
-// variants to the compiler only then. The same binary gives the same bits on every machine (the
-// SSE2 variants are chosen at compile time, not by the processor).
+// variants to the compiler only then. The compiler calls the two-wide variants; glibc picks
+// their implementation by the processor (its SSE4.1 one on any recent x86-64), so the bits are
+// the same between machines that pick the same implementation.
 #include <cstddef>
 
 namespace flexmoor::hydro {
