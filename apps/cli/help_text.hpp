@@ -143,7 +143,8 @@ every member's run. An example (cases/studies/ has more):
       element: 12
       end: last
       window: {from: 100 s}          # the part of the last dynamic step that counts
-      statistics: [max, min, mean, std, amplitude]   # amplitude = (max - min) / 2
+      statistics: [max, min, mean, std, amplitude, mpm]   # amplitude = (max - min) / 2
+      mpm: {duration: 3 h, fit: weibull}   # most probable maximum: weibull (peaks) | gumbel
       spectrum: {segment: 100 s}     # Welch, Hann, half overlap; omitted: no spectrum
 
 A path is the case's keys joined by '.', a list's index 0-based (waves.components.0.period);
@@ -154,7 +155,9 @@ DIR (-o) holds:
   DIR/study.nc                 one netCDF (CF-1.8) with a member dimension: the varied values
                                as coordinates (SI), status and error of each member, NAME_max,
                                NAME_min, NAME_mean, NAME_std (time-weighted over the window, as
-                               a case's summary: statistics), NAME_amplitude, and NAME_psd on one
+                               a case's summary: statistics), NAME_amplitude, NAME_mpm (the
+                               most probable maximum over mpm's duration, from a fit to the
+                               series' peaks or block maxima), and NAME_psd on one
                                circular-frequency axis; a failed member's values are _FillValue
   DIR/members/NNNN/            member NNNN's run: <case>.nc, <case>.summary.json, series.nc
                                (the collected series over its window), run.log, errors.log,
