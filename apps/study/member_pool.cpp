@@ -57,7 +57,7 @@ std::string formatSeconds(double s) {
 
 }  // namespace
 
-int runMemberPool(const Study& study, const std::vector<const StudyMember*>& todo,
+int runMemberPool(const Study& study, const std::vector<const StudyMember*>& to_run,
                   const std::string& dir, int workers, const PoolProgress& progress) {
   struct Worker {
     const StudyMember* member;
@@ -74,16 +74,16 @@ int runMemberPool(const Study& study, const std::vector<const StudyMember*>& tod
     const int finished = done + failed;
     std::string left = "time left unknown";
     if (finished > 0) {
-      const double waiting = static_cast<double>(todo.size() - next) + 0.5 * running.size();
+      const double waiting = static_cast<double>(to_run.size() - next) + 0.5 * running.size();
       left = "about " + formatSeconds(member_seconds / finished * waiting / workers) + " left";
     }
     *progress.out << progress.label << "study: " << event << "; " << progress.skipped + done
                   << " of " << progress.total << " done (" << progress.skipped << " before), "
                   << running.size() << " running, " << failed << " failed, " << left << std::endl;
   };
-  while (next < todo.size() || !running.empty()) {
-    while (next < todo.size() && static_cast<int>(running.size()) < workers) {
-      const StudyMember& m = *todo[next++];
+  while (next < to_run.size() || !running.empty()) {
+    while (next < to_run.size() && static_cast<int>(running.size()) < workers) {
+      const StudyMember& m = *to_run[next++];
       clearOutcome(dir, m);
       fs::create_directories(memberDirectory(dir, m.index));
       std::cout.flush();

@@ -21,8 +21,8 @@ struct PoolProgress {
   int total = 0;                // members of the study (of this rank)
 };
 
-// Returns how many of `todo` failed.
-int runMemberPool(const Study& study, const std::vector<const StudyMember*>& todo,
+// Returns how many of `to_run` failed.
+int runMemberPool(const Study& study, const std::vector<const StudyMember*>& to_run,
                   const std::string& dir, int workers, const PoolProgress& progress);
 
 }  // namespace flexmoor::app

@@ -1,22 +1,17 @@
 #include "apps/study/member_store.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <sstream>
 
 #include "apps/output/atomic_output.hpp"
+#include "apps/study/file_text.hpp"
 
 namespace flexmoor::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string readAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 std::string trim(const std::string& text) {
   const size_t a = text.find_first_not_of(" \n\t\r");
@@ -38,7 +33,7 @@ std::string seriesPath(const std::string& dir, int index) {
 
 bool isComplete(const std::string& dir, const StudyMember& member) {
   const fs::path marker = fs::path(memberDirectory(dir, member.index)) / "complete";
-  return fs::is_regular_file(marker) && trim(readAll(marker.string())) == member.hash &&
+  return fs::is_regular_file(marker) && trim(fileText(marker.string())) == member.hash &&
          fs::is_regular_file(seriesPath(dir, member.index));
 }
 
@@ -64,16 +59,16 @@ MemberOutcome readOutcome(const std::string& dir, const StudyMember& member) {
   if (isComplete(dir, member)) return {kComplete, ""};
   const fs::path failed = fs::path(memberDirectory(dir, member.index)) / "failed";
   if (!fs::is_regular_file(failed)) return {kFailed, "did not run (no outcome recorded)"};
-  std::istringstream in(readAll(failed.string()));
-  int status = kFailed;
-  in >> status;
-  std::string rest((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The status on the first line, the error after it.
+  const std::string text = fileText(failed.string());
+  const size_t end = std::min(text.find('\n'), text.size());
+  int status = std::atoi(text.substr(0, end).c_str());
   if (status != kStatusBadInput && status != kStatusNotConverged) status = kFailed;
-  return {status, trim(rest)};
+  return {status, trim(text.substr(end))};
 }
 
 std::string fileTail(const std::string& path, size_t bytes) {
-  const std::string text = trim(readAll(path));
+  const std::string text = trim(fileText(path));
   return text.size() <= bytes ? text : "..." + text.substr(text.size() - bytes);
 }
 

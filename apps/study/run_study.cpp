@@ -16,7 +16,7 @@ namespace flexmoor::app {
 
 std::vector<const StudyMember*> membersToRun(const Study& study, const std::string& dir, int rank,
                                              int ranks, int& skipped, int& assigned) {
-  std::vector<const StudyMember*> todo;
+  std::vector<const StudyMember*> to_run;
   skipped = assigned = 0;
   for (const StudyMember& m : study.members) {
     if ((m.index - 1) % ranks != rank) continue;
@@ -24,9 +24,9 @@ std::vector<const StudyMember*> membersToRun(const Study& study, const std::stri
     if (isComplete(dir, m))
       ++skipped;
     else
-      todo.push_back(&m);
+      to_run.push_back(&m);
   }
-  return todo;
+  return to_run;
 }
 
 int runStudyMembers(const Study& study, const std::string& dir, int workers, int rank, int ranks,
@@ -35,12 +35,12 @@ int runStudyMembers(const Study& study, const std::string& dir, int workers, int
   PoolProgress p;
   p.out = &progress;
   p.label = ranks > 1 ? "rank " + std::to_string(rank) + ": " : "";
-  const std::vector<const StudyMember*> todo =
+  const std::vector<const StudyMember*> to_run =
       membersToRun(study, dir, rank, ranks, p.skipped, p.total);
   progress << p.label << "study: " << p.total << " members, " << p.skipped << " complete already, "
-           << todo.size() << " to run on " << workers << " worker" << (workers == 1 ? "" : "s")
+           << to_run.size() << " to run on " << workers << " worker" << (workers == 1 ? "" : "s")
            << std::endl;
-  return runMemberPool(study, todo, dir, workers, p);
+  return runMemberPool(study, to_run, dir, workers, p);
 }
 
 int finishStudy(const Study& study, const std::string& dir, std::ostream& log) {

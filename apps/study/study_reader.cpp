@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <set>
 
 #include "apps/case/case_reader.hpp"
 #include "apps/case/yaml_input.hpp"
 #include "apps/case/yaml_load.hpp"
+#include "apps/study/file_text.hpp"
 #include "apps/study/member_case.hpp"
 #include "apps/study/study_parameters.hpp"
 #include "apps/study/value_path.hpp"
@@ -18,11 +17,6 @@ namespace flexmoor::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string fileText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 // A name for netCDF and xarray: a letter, then letters, digits and '_'.
 bool plainName(const std::string& name) {
