@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "apps/case/output_fields.hpp"
 #include "libstruct/model/model.hpp"
 #include "libstruct/solve/modal.hpp"
 #include "libstruct/solve/solver_options.hpp"
@@ -133,6 +134,7 @@ struct Case {
   std::vector<StepSpec> steps;
   std::vector<SummarySpec> summary;
   std::optional<FigureSpec> figure;
+  OutputFields output = OutputFields::all();          // `output: fields:`: what the records hold
   std::map<std::string, std::vector<int>> node_sets;  // named sets, 0-based nodes
   std::vector<int> node_ids;  // the file's id of each model node (explicit or generated)
   std::map<std::string, std::vector<int>> lines;         // nodes of each named line, start to end

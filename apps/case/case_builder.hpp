@@ -181,6 +181,8 @@ void readSummary(CaseBuilder& b, const YAML::Node& n);
 std::optional<SummarySpec> readSeriesQuantity(CaseBuilder& b, const YAML::Node& n,
                                               const std::string& path, const std::string& name,
                                               const std::vector<std::string>& other_keys);
+void readOutput(CaseBuilder& b, const YAML::Node& n);  // read_output.cpp
+// After readOutput: a series must be of a field the records hold.
 void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp
 // The checks of the built model and its steps that no section's reader can make alone
 // (model_checks.cpp): degenerate elements, free nodes and rigid-body mechanisms, coincident

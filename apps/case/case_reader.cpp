@@ -16,9 +16,9 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::vector<std::string> kTopKeys = {
-    "name",     "title",    "units",     "materials", "sections",  "nodes",   "lines",
-    "surfaces", "elements", "node_sets", "supports",  "histories", "loads",   "water",
-    "waves",    "current",  "seabed",    "bodies",    "steps",     "summary", "figure"};
+    "name",     "title",     "units",    "materials", "sections", "nodes", "lines", "surfaces",
+    "elements", "node_sets", "supports", "histories", "loads",    "water", "waves", "current",
+    "seabed",   "bodies",    "steps",    "summary",   "figure",   "output"};
 
 // The case's name: used for output files, so a plain word.
 std::string readName(Diagnostics& diag, Input& in, const Fields& top, const std::string& path) {
@@ -107,6 +107,7 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   addEnclosedFluids(b);
   if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
   readSummary(b, section("summary"));
+  readOutput(b, section("output"));
   readFigure(b, section("figure"));
   if (series) readForeignSeries(b, *series);
 

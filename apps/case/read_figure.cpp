@@ -35,6 +35,14 @@ std::optional<std::string> readSeries(CaseBuilder& b, const YAML::Node& item,
                          "', expected one of " + expected + "tension_end)");
     return std::nullopt;
   }
+  // A series is drawn from the netCDF file: its field must be written.
+  const OutputField field =
+      *OutputFields::ofVariable(*quantity == "speed" ? "velocity_x" : *quantity);
+  if (!b.c.output.has(field)) {
+    b.diag.error(*q, f.path("quantity") + ": " + *quantity + " is not written (output: fields: " +
+                         "does not list " + std::string(OutputFields::name(field)) + ")");
+    return std::nullopt;
+  }
   if (is_node) {
     const YAML::Node* n = f.require("node");
     const auto node = n ? nodeRef(b, *n, f.path("node")) : std::nullopt;

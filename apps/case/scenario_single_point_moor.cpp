@@ -38,11 +38,12 @@ struct Hold {
 YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
   const UnitSystem units = scenarioUnits(root);
   Input in(diag, units);
-  Fields top(diag, root, "",
-             {"name",   "title",    "units",    "scenario",  "water",     "waves",    "current",
-              "seabed", "anchor",   "cable",    "buoy",      "gravity",   "relax",    "dynamic",
-              "steps",  "summary",  "figure",   "histories", "materials", "sections", "nodes",
-              "lines",  "surfaces", "elements", "bodies",    "supports",  "loads",    "node_sets"});
+  Fields top(
+      diag, root, "",
+      {"name",     "title",  "units",     "scenario",  "water",    "waves",   "current", "seabed",
+       "anchor",   "cable",  "buoy",      "gravity",   "relax",    "dynamic", "steps",   "summary",
+       "figure",   "output", "histories", "materials", "sections", "nodes",   "lines",   "surfaces",
+       "elements", "bodies", "supports",  "loads",     "node_sets"});
   refuseGeneratedKeys(diag, top, "single_point_moor", "anchor:, cable:, buoy:");
   // Water: its density and depth make the rope's buoyancy and the anchor's default place.
   const ScenarioWater water = readScenarioWater(in, top, units);
@@ -135,7 +136,7 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
   // The expanded document: the case's own keys, then what the scenario stands for.
   YAML::Node doc(YAML::NodeType::Map);
   for (const auto& key : {"name", "title", "units", "water", "waves", "current", "seabed",
-                          "histories", "summary", "figure"})
+                          "histories", "summary", "figure", "output"})
     if (const YAML::Node* n = top.find(key)) doc[key] = *n;
   doc["materials"]["line"]["type"] = "linear_elastic";
   doc["materials"]["line"]["E"] = scenarioNumber(*ea / area);  // EA over pi d^2 / 4
@@ -205,9 +206,12 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
     doc["summary"]["anchor_tension_max"] = quantity("end_tension", "max");
   }
   if (!top.find("figure")) {
+    std::vector<YAML::Node> series;
     for (const char* q : {"position_x", "position_z", "speed"})
-      doc["figure"]["series"].push_back(nodeSeries(q, YAML::Node("cable.end")));
-    doc["figure"]["series"].push_back(firstElementTensionSeries());
+      series.push_back(nodeSeries(q, YAML::Node("cable.end")));
+    series.push_back(firstElementTensionSeries());
+    if (const YAML::Node figure = defaultFigure(top, series); figure.IsMap())
+      doc["figure"] = figure;
   }
   if (steps) {
     doc["steps"] = *steps;

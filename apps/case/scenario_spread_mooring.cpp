@@ -156,9 +156,9 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
   const UnitSystem units = scenarioUnits(root);
   Input in(diag, units);
   std::vector<std::string> keys = {
-      "name",     "title",   "units",   "scenario",  "water",      "gravity",
-      "seabed",   "waves",   "current", "histories", "line_types", "mooring_lines",
-      "platform", "statics", "dynamic", "steps",     "summary",    "figure"};
+      "name",    "title",   "units",     "scenario",   "water",         "gravity",  "seabed",
+      "waves",   "current", "histories", "line_types", "mooring_lines", "platform", "statics",
+      "dynamic", "steps",   "summary",   "figure",     "output"};
   keys.insert(keys.end(), scenarioGeneratedKeys().begin(), scenarioGeneratedKeys().end());
   Fields top(diag, root, "", keys);
   refuseGeneratedKeys(diag, top, "spread_mooring", "line_types: and mooring_lines:,");
@@ -187,8 +187,8 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
 
   // The expanded document: the case's own keys, then what the scenario stands for.
   YAML::Node doc(YAML::NodeType::Map);
-  for (const auto& key :
-       {"name", "title", "units", "water", "waves", "current", "histories", "summary", "figure"})
+  for (const auto& key : {"name", "title", "units", "water", "waves", "current", "histories",
+                          "summary", "figure", "output"})
     if (const YAML::Node* n = top.find(key)) doc[key] = *n;
   doc["seabed"] = top.find("seabed") ? *top.find("seabed") : YAML::Node(YAML::NodeType::Map);
   for (const auto& [name, t] : types) {

@@ -54,7 +54,7 @@ YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
   Input in(diag, units);
   std::vector<std::string> allowed = {"name",    "title", "units",   "scenario", "water", "waves",
                                       "gravity", "tube",  "liquid",  "mooring",  "relax", "modes",
-                                      "dynamic", "steps", "summary", "figure"};
+                                      "dynamic", "steps", "summary", "figure",   "output"};
   allowed.insert(allowed.end(), scenarioGeneratedKeys().begin(), scenarioGeneratedKeys().end());
   Fields top(diag, root, "", allowed);
   refuseGeneratedKeys(diag, top, "submerged_tube", "tube:, liquid:, mooring:");
@@ -121,7 +121,8 @@ YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
   const double run = (za + depth) * std::tan(*angle);
 
   YAML::Node doc(YAML::NodeType::Map);
-  for (const auto& key : {"name", "title", "units", "water", "waves", "summary", "figure"})
+  for (const auto& key :
+       {"name", "title", "units", "water", "waves", "summary", "figure", "output"})
     if (const YAML::Node* n = top.find(key)) doc[key] = *n;
   doc["materials"]["skin"]["type"] = "linear_elastic";
   doc["materials"]["skin"]["E"] = *tube.find("E");
@@ -214,10 +215,13 @@ YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
   }
   if (!top.find("figure")) {
     const double ring[4][2] = {{0.0, zc + R}, {0.0, zc - R}, {R, zc}, {-R, zc}};
+    std::vector<YAML::Node> series;
     for (const auto& p : ring)
       for (const char* q : {"displacement_x", "displacement_z"})
-        doc["figure"]["series"].push_back(nodeSeries(q, at(p[0], 0.0, p[1])));
-    doc["figure"]["series"].push_back(firstElementTensionSeries());
+        series.push_back(nodeSeries(q, at(p[0], 0.0, p[1])));
+    series.push_back(firstElementTensionSeries());
+    if (const YAML::Node figure = defaultFigure(top, series); figure.IsMap())
+      doc["figure"] = figure;
   }
   if (steps) {
     doc["steps"] = *steps;

@@ -46,6 +46,22 @@ YAML::Node firstElementTensionSeries() {
   return tension;
 }
 
+YAML::Node defaultFigure(const Fields& top, const std::vector<YAML::Node>& series) {
+  const YAML::Node* output = top.find("output");
+  const YAML::Node listed = output && output->IsMap() ? (*output)["fields"] : YAML::Node();
+  const auto written = [&](const std::string& quantity) {
+    if (!listed.IsSequence()) return true;
+    const auto field = OutputFields::ofVariable(quantity == "speed" ? "velocity_x" : quantity);
+    for (const YAML::Node& name : listed)
+      if (field && name.IsScalar() && name.Scalar() == OutputFields::name(*field)) return true;
+    return false;
+  };
+  YAML::Node figure;
+  for (const YAML::Node& s : series)
+    if (written(s["quantity"].as<std::string>())) figure["series"].push_back(s);
+  return figure;
+}
+
 void refuseGeneratedKeys(Diagnostics& diag, const Fields& top, const std::string& scenario,
                          const std::string& own_keys) {
   for (const std::string& key : scenarioGeneratedKeys())

@@ -25,6 +25,9 @@ const std::vector<std::string>& scenarioGeneratedKeys();
 // series of the first element's tension at its first end.
 YAML::Node nodeSeries(const std::string& quantity, const YAML::Node& node);
 YAML::Node firstElementTensionSeries();
+// The scenario's default figure of `series`, less the series whose field the case's `output:
+// fields:` leaves out (read as given: readOutput checks the list); a null node when none is left.
+YAML::Node defaultFigure(const Fields& top, const std::vector<YAML::Node>& series);
 // Reports each generated key the case gives itself, naming the scenario and `own_keys` (the
 // scenario's keys that stand for them, as text).
 void refuseGeneratedKeys(Diagnostics& diag, const Fields& top, const std::string& scenario,

@@ -28,7 +28,9 @@ Steps run in order, each from the state the previous one left:
   DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions: time, node and element
                        coordinates, displacements, velocities, reactions, tensions, membrane
                        resultants and mode shapes, with units; one record per step or per
-                       output time, flushed as it goes
+                       output time, flushed as it goes. `output: {fields: [position, tension]}`
+                       in the case keeps only those fields in the records (a long run
+                       written every step is mostly its records)
   DIR/<case>-<n>.vtk   the deformed shape (and mode shapes) after step n, for ParaView
   DIR/<case>.summary.json  the case's summary quantities with their units
 Every output's name starts with the case's, so cases can share one -o DIR. Outputs are put in

@@ -52,7 +52,8 @@ NetcdfWriter::NetcdfWriter(const std::string& path, const model::Model& model, c
       force_unit_(unitNames(c.units).force),
       resultant_unit_(unitNames(c.units).force + "/" + unitNames(c.units).length),
       mass_unit_(unitNames(c.units).mass),
-      sea_(c.sea) {
+      fields_(c.output),
+      sea_(c.output.has(OutputField::WaveElevation) ? c.sea : nullptr) {
   if (node_count_ == 0 || element_count_ == 0)
     throw std::runtime_error(path + ": cannot write results of a model without nodes or elements");
   defineHeader(model, c);
@@ -134,23 +135,37 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
     file_.putAttribute(text, "_Encoding", "utf-8");
   load_factor_ = file_.defineVariable("load_factor", NC_DOUBLE, {dim_step_}, "load factor", "1");
 
+  // The fields of the case's `output: fields:`; a variable not defined keeps the id -1.
   const std::vector<int> step_node = {dim_step_, dim_node_};
-  displacement_ = defineVector3("displacement", step_node, "displacement", u.length);
+  const auto nodal = [&](OutputField field, const std::string& name, const std::string& long_name,
+                         const std::string& units) {
+    Vector3Variable v = fields_.has(field) ? defineVector3(name, step_node, long_name, units)
+                                           : Vector3Variable{name, {-1, -1, -1}};
+    for (const int id : v.id)
+      if (id >= 0) {
+        file_.putAttribute(id, "coordinates", kNodeCoordinates);
+        file_.writtenInFull(id);
+      }
+    return v;
+  };
+  displacement_ = nodal(OutputField::Displacement, "displacement", "displacement", u.length);
   position_ =
-      defineVector3("position", step_node, "coordinate in the current configuration", u.length);
-  velocity_ = defineVector3("velocity", step_node, "velocity", u.length + "/" + u.time);
+      nodal(OutputField::Position, "position", "coordinate in the current configuration", u.length);
+  velocity_ = nodal(OutputField::Velocity, "velocity", "velocity", u.length + "/" + u.time);
   // An axisymmetric meridian's forces are per radian of circumference (its hoops' tensions are
   // whole forces).
   const bool meridian = std::any_of(model.elements().begin(), model.elements().end(),
                                     [](const auto& e) { return e->axisymmetric(); });
-  reaction_ = defineVector3("reaction", step_node, "support reaction (zero at free dofs)",
-                            meridian ? u.force + "/rad" : u.force);
-  for (const Vector3Variable* v : {&displacement_, &position_, &velocity_, &reaction_})
-    for (const int id : v->id) file_.putAttribute(id, "coordinates", kNodeCoordinates);
-  tension_end_ =
-      file_.defineVariable("tension_end", NC_DOUBLE, {dim_step_, dim_element_, dim_end_},
-                           "axial force at the first and the last node of the element", u.force);
-  file_.putAttribute(tension_end_, "coordinates", kElementCoordinates);
+  reaction_ = nodal(OutputField::Reaction, "reaction", "support reaction (zero at free dofs)",
+                    meridian ? u.force + "/rad" : u.force);
+  if (fields_.has(OutputField::Tension)) {
+    tension_end_ =
+        file_.defineVariable("tension_end", NC_DOUBLE, {dim_step_, dim_element_, dim_end_},
+                             "axial force at the first and the last node of the element", u.force);
+    file_.putAttribute(tension_end_, "coordinates", kElementCoordinates);
+    file_.putAttribute(tension_end_, "_FillValue", NC_FILL_DOUBLE);  // membranes and point masses
+    // (tension_end keeps its fill: NC_NOFILL would drop the _FillValue that marks membranes.)
+  }
   if (sea_) {
     wave_elevation_ = file_.defineVariable(
         "wave_elevation", NC_DOUBLE, {dim_step_},
@@ -159,11 +174,7 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
     file_.putAttribute(wave_elevation_, "coordinates", "step_number step_name load_factor");
     file_.writtenInFull(wave_elevation_);
   }
-  file_.putAttribute(tension_end_, "_FillValue", NC_FILL_DOUBLE);  // membranes and point masses
-  // (tension_end keeps its fill: NC_NOFILL would drop the _FillValue that marks membranes.)
   for (const int id : {time_, step_number_, step_name_, load_factor_}) file_.writtenInFull(id);
-  for (const Vector3Variable* v : {&displacement_, &position_, &velocity_, &reaction_})
-    for (const int id : v->id) file_.writtenInFull(id);
 }
 
 void NetcdfWriter::defineSpectrum(const hydro::WaveSpectrum& s, std::pair<double, double> band) {
@@ -239,27 +250,35 @@ void NetcdfWriter::writeMesh(const model::Model& model) {
   file_.put(element_nodes_, {0}, {nodes_1based.size()}, nodes_1based.data());
 }
 
+// The layout of the first frame's element results: its integration points (with `tension`) and
+// the membranes' resultants (with `membrane_resultant`, when it has membranes).
 void NetcdfWriter::definePoints(const ResultFrame& first) {
+  layout_defined_ = true;
   std::vector<int> point_element;
   for (int e = 0; e < element_count_; ++e) {
     element_points_.push_back(static_cast<int>(first.elements[e].point_tension.size()));
     point_element.insert(point_element.end(), element_points_.back(), e + 1);
   }
-  file_.redefine();
-  dim_point_ = file_.defineDimension("point", point_element.size());
-  element_point_count_ = file_.defineVariable("element_point_count", NC_INT, {dim_element_},
-                                              "number of integration points of the element");
-  file_.putAttribute(element_point_count_, "sample_dimension", "point");
-  point_element_ = file_.defineVariable("point_element", NC_INT, {dim_point_},
-                                        "element of the integration point, 1-based");
-  tension_point_ = file_.defineVariable(
-      "tension_point", NC_DOUBLE, {dim_step_, dim_point_},
-      "axial force at the integration points, element by element in element order", force_unit_);
-  file_.writtenInFull(tension_point_);
-  file_.putAttribute(tension_point_, "coordinates",
-                     "step_number step_name load_factor point_element");
-  const bool membranes = std::any_of(first.elements.begin(), first.elements.end(),
+  const bool tensions = fields_.has(OutputField::Tension);
+  const bool membranes = fields_.has(OutputField::MembraneResultant) &&
+                         std::any_of(first.elements.begin(), first.elements.end(),
                                      [](const auto& r) { return !r.point_resultant.empty(); });
+  if (!tensions && !membranes) return;
+  file_.redefine();
+  if (tensions) {
+    dim_point_ = file_.defineDimension("point", point_element.size());
+    element_point_count_ = file_.defineVariable("element_point_count", NC_INT, {dim_element_},
+                                                "number of integration points of the element");
+    file_.putAttribute(element_point_count_, "sample_dimension", "point");
+    point_element_ = file_.defineVariable("point_element", NC_INT, {dim_point_},
+                                          "element of the integration point, 1-based");
+    tension_point_ = file_.defineVariable(
+        "tension_point", NC_DOUBLE, {dim_step_, dim_point_},
+        "axial force at the integration points, element by element in element order", force_unit_);
+    file_.writtenInFull(tension_point_);
+    file_.putAttribute(tension_point_, "coordinates",
+                       "step_number step_name load_factor point_element");
+  }
   if (membranes)
     for (auto [id, name, which] :
          {std::tuple(&resultant_max_, "membrane_resultant_max", "larger"),
@@ -273,8 +292,10 @@ void NetcdfWriter::definePoints(const ResultFrame& first) {
       file_.putAttribute(*id, "coordinates", kElementCoordinates);
     }
   file_.endDefine();
-  file_.put(element_point_count_, {0}, {element_points_.size()}, element_points_.data());
-  file_.put(point_element_, {0}, {point_element.size()}, point_element.data());
+  if (tensions) {
+    file_.put(element_point_count_, {0}, {element_points_.size()}, element_points_.data());
+    file_.put(point_element_, {0}, {point_element.size()}, point_element.data());
+  }
 }
 
 void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
@@ -282,14 +303,16 @@ void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
     throw std::runtime_error(path() + ": cannot write step \"" + frame.step_name + "\": " + what);
   };
   if (!frame.state) fail("the frame has no state");
+  if (frame.step_name.size() > kNameLength)
+    fail("the step name is longer than " + std::to_string(kNameLength) + " characters");
   if (frame.state->displacement.cols() != node_count_ ||
-      frame.state->velocity.cols() != node_count_ || frame.reactions.cols() != node_count_)
+      frame.state->velocity.cols() != node_count_ ||
+      (fields_.has(OutputField::Reaction) && frame.reactions.cols() != node_count_))
     fail("its nodal fields do not have the model's " + std::to_string(node_count_) + " nodes");
+  if (!elementResults()) return;
   if (static_cast<int>(frame.elements.size()) != element_count_)
     fail("it has " + std::to_string(frame.elements.size()) + " element results for " +
          std::to_string(element_count_) + " elements");
-  if (frame.step_name.size() > kNameLength)
-    fail("the step name is longer than " + std::to_string(kNameLength) + " characters");
   for (size_t e = 0; e < element_points_.size(); ++e)
     if (static_cast<int>(frame.elements[e].point_tension.size()) != element_points_[e])
       fail("element " + std::to_string(e) + " reports " +
@@ -299,14 +322,18 @@ void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
 
 void NetcdfWriter::gatherNodal(const Vector3Variable& v, const model::NodalField& field,
                                const model::NodalField* plus) {
+  if (v.id[0] < 0) return;  // not a field of the case's output
   const size_t nodes = node_count_;
+  // The fields are checked where they are (in cache), not in the record buffers just written
+  // (reading those back cost as much as writing them); the buffers only when a value is not.
+  const bool finite = field.allFinite() && (!plus || plus->allFinite());
   for (int k = 0; k < 3; ++k) {
     Eigen::Map<Eigen::RowVectorXd> values(file_.slot<double>(v.id[k], records_), nodes);
     if (plus)
       values = field.row(k) + plus->row(k);
     else
       values = field.row(k);
-    if (!values.allFinite())
+    if (!finite)
       requireAllFinite(values.data(), nodes, path(), [&](size_t n) {
         return v.name + kAxis[k] + "[step " + std::to_string(records_) + ", node " +
                std::to_string(n) + "]";
@@ -315,6 +342,7 @@ void NetcdfWriter::gatherNodal(const Vector3Variable& v, const model::NodalField
 }
 
 void NetcdfWriter::gatherTensions(const ResultFrame& frame) {
+  if (tension_end_ < 0) return;  // not a field of the case's output
   const size_t elements = element_count_;
   double* ends = file_.slot<double>(tension_end_, records_);
   double* points = file_.slot<double>(tension_point_, records_);
@@ -395,7 +423,7 @@ void NetcdfWriter::gatherModes(const ResultFrame& frame) {
 void NetcdfWriter::write(const ResultFrame& frame) {
   requireMatches(frame);
   // The layout first: defining variables writes out what is held.
-  if (dim_point_ < 0) definePoints(frame);
+  if (!layout_defined_ && elementResults()) definePoints(frame);
   if (!frame.frequencies.empty()) {
     if (dim_mode_ < 0) defineModes(frame.frequencies.size());
     if (frame.frequencies.size() != mode_count_)

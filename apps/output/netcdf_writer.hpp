@@ -17,7 +17,8 @@
 // element_nodes (1-based nodes along the element), and the integration points as
 // element_point_count + point_element (1-based element).
 //
-// Per record: wave_elevation (time) at x = y = 0 when the case has a sea,
+// Per record, of the fields the case's `output: fields:` lists (all by default;
+// apps/case/output_fields.hpp): wave_elevation (time) at x = y = 0 when the case has a sea,
 // displacement_/position_/velocity_/reaction_x/_y/_z (time, node), tension_end (time,
 // element, end; _FillValue for elements without an axial force), tension_point (time, point),
 // membrane_resultant_max/_min (time, element; _FillValue off membranes), angular_frequency (time,
@@ -61,6 +62,8 @@ class NetcdfWriter final : public ResultSink {
 
   // Flushes every record written so far to disk now.
   void flush() override { file_.flush(); }
+  // Element results and reactions are needed only for the fields that hold them.
+  bool needsResults() const override { return fields_.needsResults(); }
 
   size_t records() const { return records_; }
   const std::string& path() const { return file_.path(); }
@@ -84,6 +87,11 @@ class NetcdfWriter final : public ResultSink {
   void defineModes(size_t count);
   void gatherModes(const ResultFrame& frame);
   void requireMatches(const ResultFrame& frame) const;
+  // The records hold element results (tensions or membrane resultants): the frames must have
+  // them, in the layout of the first.
+  bool elementResults() const {
+    return fields_.has(OutputField::Tension) || fields_.has(OutputField::MembraneResultant);
+  }
   // field, or field + *plus (a position: reference + displacement), one record of v.
   void gatherNodal(const Vector3Variable& v, const model::NodalField& field,
                    const model::NodalField* plus = nullptr);
@@ -96,6 +104,8 @@ class NetcdfWriter final : public ResultSink {
   int element_count_ = 0;
   model::NodalField reference_;  // for position = reference + displacement
   std::string force_unit_, resultant_unit_, mass_unit_;
+  OutputFields fields_;              // what the records hold (the case's `output: fields:`)
+  bool layout_defined_ = false;      // definePoints has run
   std::vector<int> element_points_;  // integration points per element, from the first frame
   size_t records_ = 0;
   // Buffers reused by every record, so that writing a record allocates nothing (its values go

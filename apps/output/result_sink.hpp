@@ -12,6 +12,9 @@ class ResultSink {
   virtual void write(const ResultFrame& frame) = 0;
   // At the end of every step and of the run: whatever the sink buffers is made to last.
   virtual void flush() {}
+  // Whether the frames written must carry element results and reactions (an assembly sweep per
+  // record); a streamed record skips them when no sink does.
+  virtual bool needsResults() const { return true; }
 };
 
 }  // namespace flexmoor::app

@@ -335,6 +335,9 @@ def draw_shapes(ds, args):
                  (time, time_units, t.min(), t.max(), time_units))
         nearest = np.abs(t - time)
         records.append(int(np.flatnonzero(nearest == nearest.min())[-1]))  # the last of equals
+    if "position_x" not in ds:
+        fail("--shapes: the file has no position_x (the case's output: fields: leaves out "
+             "position)")
     polylines = element_polylines(ds)
     units = ds["position_x"].attrs.get("units", "")
     plt = pyplot()

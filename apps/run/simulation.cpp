@@ -1,5 +1,6 @@
 #include "apps/run/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 
@@ -54,11 +55,12 @@ ResultFrame Simulation::frame(int i, std::string name, const model::State& s) co
   return f;
 }
 
-void Simulation::fill(int i, std::string name, const model::State& s, ResultFrame& f) const {
+void Simulation::fill(int i, std::string name, const model::State& s, ResultFrame& f,
+                      bool results) const {
   f.step_index = i;
   f.step_name = std::move(name);
   f.state = &s;
-  assembler_->results(s, f.elements, f.reactions);
+  if (results) assembler_->results(s, f.elements, f.reactions);
 }
 
 // Runs step i from `state`; returns its closing frame. Throws ConvergenceError with `state` at
@@ -113,13 +115,15 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
   double next_report = start + 0.1 * duration;
   SummarySeries series(c_, i, *assembler_);
   ResultFrame streamed;  // one for every record of the step: its storage is reused
+  const bool results = std::any_of(sinks_.begin(), sinks_.end(),
+                                   [](const ResultSink* sink) { return sink->needsResults(); });
   auto on_step = [&](const model::State& s) {
     ++accepted;
     series.sample(s);
     for (StateObserver* o : observers_) o->accepted(i, s, *assembler_);
     const bool last = s.time >= end - 1e-9 * std::max(1.0, duration);
     if (accepted % step.output_every == 0 || last) {
-      fill(i, step.name, s, streamed);
+      fill(i, step.name, s, streamed, results);
       write(streamed);
     }
     if (s.time >= next_report - 1e-12 || last) {

@@ -53,8 +53,11 @@ class Simulation {
  private:
   ResultFrame step(int i, model::State& state);
   ResultFrame frame(int i, std::string name, const model::State& s) const;
-  // The frame of state s of step i into f, reusing its storage.
-  void fill(int i, std::string name, const model::State& s, ResultFrame& f) const;
+  // The frame of state s of step i into f, reusing its storage; its element results and
+  // reactions only when `results` (a step's closing frame always has them: the summary and
+  // the VTK files read them).
+  void fill(int i, std::string name, const model::State& s, ResultFrame& f,
+            bool results = true) const;
   ResultFrame modes(int i, const model::State& state);
   ResultFrame dynamic(int i, model::State& state);
   void release(const StepSpec& step);

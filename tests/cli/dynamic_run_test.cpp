@@ -5,6 +5,7 @@
 #include <netcdf.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,36 @@ TEST(DynamicRun, StreamsEveryNthStepOfAScheduleAndReportsProgress) {
   ASSERT_TRUE(std::isfinite(w)) << json;
   EXPECT_GT(std::abs(w), 0.0);
   EXPECT_LT(std::abs(w), 1.25e-3 * 1.25 / (1.0 - 0.0625) * 1.05);
+}
+
+// `output: fields: [position, velocity]` on the same case: the records hold those two fields
+// only, with the very values of the full file (bit for bit: the same states), and the summary,
+// the VTK files and the figure-free run are what the full run gives (the summary is taken from
+// the states, not from the file).
+TEST(DynamicRun, TheOutputFieldsListedAreTheOnlyOnesWrittenAndTheSameNumbers) {
+  const std::string text = flexmoor::test::readFile(std::filesystem::path(FLEXMOOR_SOURCE_DIR) /
+                                                    "cases/demo/driven-taut-cable.yaml");
+  const auto full_dir = scratch("fields-full"), lean_dir = scratch("fields-lean");
+  ASSERT_EQ(flexmoor::test::runText(full_dir, "demo", text).exit_code, 0);
+  const auto r =
+      flexmoor::test::runText(lean_dir, "demo", text + "output:\n  fields: [position, velocity]\n");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(flexmoor::test::readFile(full_dir / "driven-taut-cable.summary.json"),
+            flexmoor::test::readFile(lean_dir / "driven-taut-cable.summary.json"));
+  EXPECT_EQ(flexmoor::test::readFile(full_dir / "driven-taut-cable-3.vtk"),
+            flexmoor::test::readFile(lean_dir / "driven-taut-cable-3.vtk"));
+
+  int full = -1, lean = -1;
+  ASSERT_EQ(nc_open((full_dir / "driven-taut-cable.nc").c_str(), NC_NOWRITE, &full), NC_NOERR);
+  ASSERT_EQ(nc_open((lean_dir / "driven-taut-cable.nc").c_str(), NC_NOWRITE, &lean), NC_NOERR);
+  const size_t values = 17 * 9;  // records x nodes
+  for (const char* name : {"position_x", "position_z", "velocity_z"})
+    EXPECT_EQ(readVariable(full, name, values), readVariable(lean, name, values)) << name;
+  int var = -1;
+  for (const char* absent : {"displacement_x", "reaction_x", "tension_end", "tension_point"})
+    EXPECT_EQ(nc_inq_varid(lean, absent, &var), NC_ENOTVAR) << absent;
+  nc_close(full);
+  nc_close(lean);
 }
 
 }  // namespace

@@ -251,6 +251,56 @@ TEST_F(NetcdfWriterTest, EachRecordIsReadableFromDiskOnceFlushed) {
   EXPECT_EQ(nc.doubles("tension_point"), (std::vector<double>{10.0, 11.0, 12.0, 11.0, 12.0, 13.0}));
 }
 
+// `output: fields:` (apps/case/output_fields.hpp): the records hold the fields listed and no
+// others, the listed ones with the values of a full file (exactly: the same doubles copied), and
+// a frame without element results or reactions is written when none of those is listed.
+TEST_F(NetcdfWriterTest, OnlyTheListedFieldsAreWritten) {
+  case_.output = OutputFields::none();
+  case_.output.add(OutputField::Position);
+  case_.output.add(OutputField::Velocity);
+  EXPECT_FALSE(case_.output.needsResults());
+  {
+    NetcdfWriter writer(path_, *case_.model, case_);
+    EXPECT_FALSE(writer.needsResults());
+    writer.write(frameOf(0, first_));
+    ResultFrame bare = frameOf(1, second_);  // what Simulation streams: no results asked for
+    bare.elements.clear();
+    bare.reactions.resize(3, 0);
+    writer.write(bare);
+  }
+  int id = -1;
+  ASSERT_EQ(nc_open(path_.c_str(), NC_NOWRITE, &id), NC_NOERR);
+  int variable = -1;
+  for (const char* absent : {"displacement_x", "reaction_z", "tension_end", "tension_point",
+                             "point_element", "wave_elevation"})
+    EXPECT_EQ(nc_inq_varid(id, absent, &variable), NC_ENOTVAR) << absent;
+  int point = -1;
+  EXPECT_EQ(nc_inq_dimid(id, "point", &point), NC_EBADDIM);
+  nc_close(id);
+  const Reader nc(path_);
+  EXPECT_EQ(nc.dimension("time"), 2u);
+  const std::vector<double> x = nc.doubles("position_x");
+  const std::vector<double> vz = nc.doubles("velocity_z");
+  for (int step = 0; step < 2; ++step)
+    for (int n = 0; n < 3; ++n) {
+      EXPECT_DOUBLE_EQ(x[3 * step + n], 5.0 * n + step + 0.1 * n);
+      EXPECT_DOUBLE_EQ(vz[3 * step + n], -(step + 0.1 * n + 0.02));
+    }
+  EXPECT_EQ(nc.ints("step_number"), (std::vector<int>{1, 2}));
+}
+
+// With tensions listed, a frame without element results is refused (it cannot be written).
+TEST_F(NetcdfWriterTest, AFrameWithoutTheResultsItsFieldsNeedIsRefused) {
+  case_.output = OutputFields::none();
+  case_.output.add(OutputField::Tension);
+  NetcdfWriter writer(path_, *case_.model, case_);
+  EXPECT_TRUE(writer.needsResults());
+  ResultFrame bare = frameOf(0, first_);
+  bare.elements.clear();
+  EXPECT_THROW(writer.write(bare), std::runtime_error);
+  EXPECT_EQ(writer.records(), 0u);
+}
+
 TEST_F(NetcdfWriterTest, NaNDisplacementIsRefusedNamingVariableAndIndex) {
   NetcdfWriter writer(path_, *case_.model, case_);
   writer.write(frameOf(0, first_));
