@@ -379,7 +379,10 @@ void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scrat
     Eigen::Vector3d force = f.segment<3>(3 * local);
     if (loaded) force -= p->segment<3>(3 * local);
     if (damped) force += scratch.damping.segment<3>(3 * local);
-    if (accelerating) force += consistent_masses_[e].middleRows<3>(3 * local) * a;
+    if (accelerating) {  // M_e a at the end node, column by column (no general GEMV call)
+      const Eigen::MatrixXd& M = consistent_masses_[e];
+      for (Eigen::Index j = 0; j < a.size(); ++j) force += M.block<3, 1>(3 * local, j) * a(j);
+    }
     const double magnitude = force.norm();
     r.end_tension[end] = force.dot(position(next) - position(local)) > 0.0 ? -magnitude : magnitude;
   }
