@@ -12,6 +12,7 @@
 #include "apps/case/case_reader.hpp"
 #include "apps/case/diagnostics.hpp"
 #include "apps/cli/help_text.hpp"
+#include "apps/output/netcdf_file.hpp"
 #include "apps/run/draw_figure.hpp"
 #include "apps/run/run_case.hpp"
 #include "apps/study/run_study.hpp"
@@ -142,6 +143,7 @@ int listNamedCases() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  turnOffHdf5ExitCleanup();  // before anything starts HDF5 (netcdf_file.hpp)
   CLI::App app(cli::kDescription, "flexmoor");
   app.footer(cli::kOverview);
   app.set_version_flag("--version", std::string("flexmoor ") + FLEXMOOR_VERSION);

@@ -1,6 +1,9 @@
 #include "apps/output/netcdf_file.hpp"
 
+#include <H5public.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
 #include <stdexcept>
 
@@ -12,8 +15,14 @@ namespace flexmoor::app {
 // NC_CLOBBER would truncate the file at `path` in place, under any reader holding it open,
 // before HDF5 finds that file locked and fails; removing it first and creating with
 // NC_NOCLOBBER (O_EXCL, which never follows a link) makes the new file a new one.
+void turnOffHdf5ExitCleanup() {
+  static const herr_t once = H5dont_atexit();  // fails, harmlessly, once HDF5 has started
+  (void)once;
+}
+
 NetcdfFile::NetcdfFile(std::string path, std::chrono::steady_clock::duration flush_interval)
     : path_(std::move(path)), flush_interval_(flush_interval) {
+  turnOffHdf5ExitCleanup();
   removeEntry(path_);
   check(nc_create(path_.c_str(), NC_NETCDF4 | NC_NOCLOBBER, &id_), "cannot create the file");
 }
@@ -32,7 +41,12 @@ void NetcdfFile::check(int status, const std::string& what) const {
 }
 
 void NetcdfFile::fail(int status, const std::string& what) const {
-  throw std::runtime_error(path_ + ": " + what + ": " + nc_strerror(status));
+  // HDF5's error says only "HDF error"; the system's says why when the disk is full or the file
+  // may grow no more (errno as the failed write left it: these values come from nothing else).
+  const int cause = errno;
+  const bool io = cause == ENOSPC || cause == EFBIG || cause == EDQUOT || cause == EIO;
+  throw std::runtime_error(path_ + ": " + what + ": " + nc_strerror(status) +
+                           (io ? std::string(" (") + std::strerror(cause) + ")" : ""));
 }
 
 int NetcdfFile::defineDimension(const std::string& name, size_t length) {

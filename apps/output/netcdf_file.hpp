@@ -19,6 +19,14 @@
 
 namespace flexmoor::app {
 
+// HDF5 closes at exit the files still open; after a write that failed (a full disk, a file size
+// limit) nc_close leaves HDF5's file open, and that close at exit crashes (SIGSEGV in
+// H5F__close_cb), turning a clear "exit 4" into a segmentation fault. Every file here is closed
+// by its NetcdfFile or its reader, so the cleanup is turned off: first thing in main, and by
+// every NetcdfFile (for programs that start HDF5 by writing). Once HDF5 has started, it is too
+// late and changes nothing.
+void turnOffHdf5ExitCleanup();
+
 class NetcdfFile {
  public:
   static constexpr std::chrono::milliseconds kFlushInterval{1000};
