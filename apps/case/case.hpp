@@ -125,6 +125,10 @@ struct SeaOrigin {
   std::pair<double, double> band{0.0, 0.0};  // its synthesised band [omega_min, omega_max], rad/s
 };
 
+// The longest step name a case may give: the results' netCDF holds names in fixed rows of
+// this many characters (name_strlen, netcdf_writer.hpp).
+inline constexpr size_t kMaxNameLength = 128;
+
 struct Case {
   std::string name;   // `name:` in the file, or the file's stem
   std::string title;  // optional one-line description

@@ -285,7 +285,12 @@ void readRelease(CaseBuilder& b, Fields& f, StepSpec& step) {
 // `name:`, or the kind of step when there is none.
 std::string stepName(CaseBuilder& b, const Fields& f, const char* kind) {
   const YAML::Node* n = f.find("name");
-  return n ? b.in.text(*n, f.path("name")).value_or(kind) : kind;
+  const std::string name = n ? b.in.text(*n, f.path("name")).value_or(kind) : kind;
+  if (name.size() > kMaxNameLength)
+    b.diag.error(*n, f.path("name") + ": too long for the results (got " +
+                         std::to_string(name.size()) + " characters, expected at most " +
+                         std::to_string(kMaxNameLength) + ")");
+  return name;
 }
 
 // The keys each kind of step takes; static and dynamic steps share the Newton keys.

@@ -92,7 +92,17 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
   dim_element_ = file_.defineDimension("element", element_count_);
   dim_end_ = file_.defineDimension("end", 2);
   dim_element_node_ = file_.defineDimension("element_node", element_nodes);
-  dim_name_ = file_.defineDimension("name_strlen", kNameLength);
+  // name_strlen: as long as the longest name written (without the case's steps, as long as any
+  // step name may be).
+  if (!c.steps.empty()) {
+    name_length_ = 1;
+    for (const StepSpec& step : c.steps)
+      name_length_ = std::max(name_length_, step.name.size() + kLastConvergedSuffix.size());
+    for (const auto& e : model.elements())
+      name_length_ = std::max(name_length_, e->typeName().size());
+  }
+  text_count_[1] = name_length_;
+  dim_name_ = file_.defineDimension("name_strlen", name_length_);
   dim_step_ = file_.defineDimension("time", NC_UNLIMITED);
 
   const UnitNames u = unitNames(c.units);
@@ -303,8 +313,8 @@ void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
     throw std::runtime_error(path() + ": cannot write step \"" + frame.step_name + "\": " + what);
   };
   if (!frame.state) fail("the frame has no state");
-  if (frame.step_name.size() > kNameLength)
-    fail("the step name is longer than " + std::to_string(kNameLength) + " characters");
+  if (frame.step_name.size() > name_length_)
+    fail("the step name is longer than name_strlen (" + std::to_string(name_length_) + ")");
   if (frame.state->displacement.cols() != node_count_ ||
       frame.state->velocity.cols() != node_count_ ||
       (fields_.has(OutputField::Reaction) && frame.reactions.cols() != node_count_))
@@ -454,7 +464,7 @@ void NetcdfWriter::write(const ResultFrame& frame) {
     *file_.slot<int>(step_number_, records_) = frame.step_index + 1;
     char* name = file_.slot<char>(step_name_, records_);
     std::fill_n(std::copy(frame.step_name.begin(), frame.step_name.end(), name),
-                kNameLength - frame.step_name.size(), '\0');
+                name_length_ - frame.step_name.size(), '\0');
   } catch (...) {
     file_.drop();  // nothing of a refused record is written
     throw;
@@ -465,10 +475,10 @@ void NetcdfWriter::write(const ResultFrame& frame) {
 }
 
 void NetcdfWriter::putText(int variable, size_t index, const std::string& text) {
-  if (text.size() > kNameLength)
+  if (text.size() > name_length_)
     throw std::runtime_error(path() + ": \"" + text + "\" is longer than name_strlen (" +
-                             std::to_string(kNameLength) + ")");
-  text_.assign(kNameLength, '\0');
+                             std::to_string(name_length_) + ")");
+  text_.assign(name_length_, '\0');
   text_.replace(0, text.size(), text);
   text_start_[0] = index;
   file_.put(variable, text_start_, text_count_, text_.data());

@@ -68,7 +68,10 @@ class NetcdfWriter final : public ResultSink {
   size_t records() const { return records_; }
   const std::string& path() const { return file_.path(); }
 
-  static constexpr size_t kNameLength = 128;  // name_strlen
+  // name_strlen's longest: a case's longest step name and the suffix of a step that did not
+  // converge. A file's name_strlen is what its names need (its longest step name with that
+  // suffix, its element types), so that step_name does not pad every record to this length.
+  static constexpr size_t kNameLength = kMaxNameLength + kLastConvergedSuffix.size();
 
  private:
   struct Vector3Variable {
@@ -111,7 +114,8 @@ class NetcdfWriter final : public ResultSink {
   // Buffers reused by every record, so that writing a record allocates nothing (its values go
   // straight into the file's record buffers: NetcdfFile::slot).
   std::string text_;
-  std::vector<size_t> text_start_{0, 0}, text_count_{1, kNameLength};
+  size_t name_length_ = kNameLength;  // name_strlen of this file
+  std::vector<size_t> text_start_{0, 0}, text_count_{1, 0};
 
   int dim_step_ = -1, dim_node_ = -1, dim_element_ = -1, dim_end_ = -1, dim_name_ = -1;
   int dim_element_node_ = -1, dim_point_ = -1;

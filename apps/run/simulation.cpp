@@ -162,7 +162,7 @@ SimulationResult Simulation::run() {
     } catch (const solve::ConvergenceError& e) {
       diag_ << "flexmoor: step " << i + 1 << " (" << spec.name << ", " << spec.where.file << ":"
             << spec.where.line << ") did not converge: " << e.what() << std::endl;
-      write(frame(static_cast<int>(i), spec.name + " (last converged)", state));
+      write(frame(static_cast<int>(i), spec.name + std::string(kLastConvergedSuffix), state));
       flush();
       out.exit_code = kNotConverged;
       break;

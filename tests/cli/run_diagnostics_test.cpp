@@ -43,12 +43,15 @@ TEST(RunDiagnostics, NonConvergenceIsDiagnosedOnStderrWithTheLastConvergedStateI
   ASSERT_EQ(nc_inq_dimid(nc, "time", &dim), NC_NOERR);
   ASSERT_EQ(nc_inq_dimlen(nc, dim, &records), NC_NOERR);
   ASSERT_GE(records, 1u);
-  char name[129] = "";
-  const size_t start[2] = {records - 1, 0}, count[2] = {1, 128};
+  size_t length = 0;  // name_strlen: the longest name the file holds
+  ASSERT_EQ(nc_inq_dimid(nc, "name_strlen", &dim), NC_NOERR);
+  ASSERT_EQ(nc_inq_dimlen(nc, dim, &length), NC_NOERR);
+  std::string name(length, '\0');
+  const size_t start[2] = {records - 1, 0}, count[2] = {1, length};
   ASSERT_EQ(nc_inq_varid(nc, "step_name", &var), NC_NOERR);
-  ASSERT_EQ(nc_get_vara_text(nc, var, start, count, name), NC_NOERR);
+  ASSERT_EQ(nc_get_vara_text(nc, var, start, count, name.data()), NC_NOERR);
   nc_close(nc);
-  EXPECT_NE(std::string(name).find("(last converged)"), std::string::npos) << name;
+  EXPECT_NE(name.find("(last converged)"), std::string::npos) << name;
 }
 
 }  // namespace

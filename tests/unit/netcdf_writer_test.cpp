@@ -104,8 +104,9 @@ class Reader {
   }
   // Row `index` of a (record, name_strlen) character variable, without its padding.
   std::string row(const char* name, size_t index) const {
-    std::string s(NetcdfWriter::kNameLength, '\0');
-    const size_t start[2] = {index, 0}, count[2] = {1, NetcdfWriter::kNameLength};
+    const size_t length = dimension("name_strlen");
+    std::string s(length, '\0');
+    const size_t start[2] = {index, 0}, count[2] = {1, length};
     expectOk(nc_get_vara_text(id_, variable(name), start, count, s.data()));
     return s.c_str();
   }
