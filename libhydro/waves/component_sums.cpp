@@ -15,6 +15,7 @@ constexpr double kTiny = std::numeric_limits<double>::min();
 }  // namespace
 
 void ComponentTable::add(const ComponentTerms& c) {
+  if (!k.empty() && c.k < k.back()) k_ascending = false;
   kx.push_back(c.kx);
   ky.push_back(c.ky);
   k.push_back(c.k);

@@ -1,6 +1,7 @@
 #include "libhydro/waves/long_crested_sums.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "libhydro/waves/vector_math.hpp"
@@ -9,6 +10,7 @@ namespace flexmoor::hydro {
 namespace {
 
 constexpr double kTiny = std::numeric_limits<double>::min();  // as in component_sums.cpp
+constexpr double kLn2To60 = 41.58883083359672;                // ln(2^60)
 
 }  // namespace
 
@@ -36,11 +38,22 @@ double longCrestedElevation(const ComponentTable& c, const ComponentScratch& s, 
 // -E s4 + E' s2; p = E s9; d/dxi (xi along d) of u, w, du/dt, dw/dt, p: -E s5, E s6,
 // E s7 - E' s5, E s8 + E' s6, -E s10; d/dz of the same: E s6, E s5, E s8 + E' s6,
 // -E s7 + E' s5, E s11 (each a term of kinematicsSum's H, V, P, G and Z with slope 0).
+// The depth factors e^{kz} (1 + r) and e^{kz} (1 - r), r = e^{-2k(z + h)}, are at most
+// 2 max(e^{kz}, e^{-k(z + 2h)}) = 2 e^{-k d}, d = min(-z, 2h + z) (the second below the bed,
+// where a line resting on it may sink a little), times 1 / (1 - e^{-2kh}), which is below
+// 1 + 2^-119 where k d >= ln(2^60) (k h >= k d): so each factor is below 2^-59 for k beyond.
+std::size_t componentsFelt(const ComponentTable& c, double z, double depth) {
+  const double d = std::isinf(depth) ? -z : std::min(-z, 2.0 * depth + z);
+  if (!c.k_ascending || !(d > 0.0)) return c.size();
+  const double k_cut = kLn2To60 / d;
+  return static_cast<std::size_t>(std::lower_bound(c.k.begin(), c.k.end(), k_cut) - c.k.begin());
+}
+
 void longCrestedKinematics(const ComponentTable& c, ComponentScratch& s, const Envelope& e,
-                           double z, bool gradients, LinearKinematics& out) {
-  const std::size_t n = c.size();
+                           double z, double depth, bool gradients, LinearKinematics& out) {
+  const std::size_t n = componentsFelt(c, z, depth);
   out = LinearKinematics();
-  if (n == 0) return;
+  if (c.size() == 0) return;  // no component, no heading
   for (std::size_t i = 0; i < n; ++i) s.kz[i] = c.k[i] * z;
   exponentials(s.kz.data(), s.ekz.data(), n);
   double* const t = s.terms.data();

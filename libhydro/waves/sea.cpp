@@ -77,7 +77,7 @@ FluidPoint Sea::evaluate(const Eigen::Vector3d& x, double t, FluidGradient* grad
   }
   LinearKinematics k;
   if (oneEnvelope())
-    longCrestedKinematics(table_, scratch, rampAt(t), z, gradient != nullptr, k);
+    longCrestedKinematics(table_, scratch, rampAt(t), z, water_.depth, gradient != nullptr, k);
   else
     kinematicsSum(table_, scratch, z, gradient != nullptr, k);
   const double rho_g = water_.density * water_.gravity;
