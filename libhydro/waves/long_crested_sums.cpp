@@ -29,15 +29,6 @@ double longCrestedElevation(const ComponentTable& c, const ComponentScratch& s, 
   return e.value * eta;
 }
 
-// With f_h, f_v, f_p as in kinematicsSum (component_sums.cpp), U = a w, A = a w^2, P = rho g a,
-// the eleven sums
-//   s1 = sum U f_h cos, s2 = sum U f_v sin, s3 = sum A f_h sin, s4 = sum A f_v cos,
-//   s5 = sum k U f_h sin, s6 = sum k U f_v cos, s7 = sum k A f_h cos, s8 = sum k A f_v sin,
-//   s9 = sum P f_p cos, s10 = sum k P f_p sin, s11 = sum k P (sinh / cosh) cos
-// give, with E and E' the envelope: u = E s1 d, w = E s2; du/dt = (E s3 + E' s1) d, dw/dt =
-// -E s4 + E' s2; p = E s9; d/dxi (xi along d) of u, w, du/dt, dw/dt, p: -E s5, E s6,
-// E s7 - E' s5, E s8 + E' s6, -E s10; d/dz of the same: E s6, E s5, E s8 + E' s6,
-// -E s7 + E' s5, E s11 (each a term of kinematicsSum's H, V, P, G and Z with slope 0).
 // The depth factors e^{kz} (1 + r) and e^{kz} (1 - r), r = e^{-2k(z + h)}, are at most
 // 2 max(e^{kz}, e^{-k(z + 2h)}) = 2 e^{-k d}, d = min(-z, 2h + z) (the second below the bed,
 // where a line resting on it may sink a little), times 1 / (1 - e^{-2kh}), which is below
@@ -49,6 +40,15 @@ std::size_t componentsFelt(const ComponentTable& c, double z, double depth) {
   return static_cast<std::size_t>(std::lower_bound(c.k.begin(), c.k.end(), k_cut) - c.k.begin());
 }
 
+// With f_h, f_v, f_p as in kinematicsSum (component_sums.cpp), U = a w, A = a w^2, P = rho g a,
+// the eleven sums
+//   s1 = sum U f_h cos, s2 = sum U f_v sin, s3 = sum A f_h sin, s4 = sum A f_v cos,
+//   s5 = sum k U f_h sin, s6 = sum k U f_v cos, s7 = sum k A f_h cos, s8 = sum k A f_v sin,
+//   s9 = sum P f_p cos, s10 = sum k P f_p sin, s11 = sum k P (sinh / cosh) cos
+// give, with E and E' the envelope: u = E s1 d, w = E s2; du/dt = (E s3 + E' s1) d, dw/dt =
+// -E s4 + E' s2; p = E s9; d/dxi (xi along d) of u, w, du/dt, dw/dt, p: -E s5, E s6,
+// E s7 - E' s5, E s8 + E' s6, -E s10; d/dz of the same: E s6, E s5, E s8 + E' s6,
+// -E s7 + E' s5, E s11 (each a term of kinematicsSum's H, V, P, G and Z with slope 0).
 void longCrestedKinematics(const ComponentTable& c, ComponentScratch& s, const Envelope& e,
                            double z, double depth, bool gradients, LinearKinematics& out) {
   const std::size_t n = componentsFelt(c, z, depth);
