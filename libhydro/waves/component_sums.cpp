@@ -15,6 +15,7 @@ constexpr double kTiny = std::numeric_limits<double>::min();
 }  // namespace
 
 void ComponentTable::add(const ComponentTerms& c) {
+  if (!k.empty() && c.k < k.back()) k_ascending = false;
   kx.push_back(c.kx);
   ky.push_back(c.ky);
   k.push_back(c.k);
@@ -32,6 +33,10 @@ void ComponentTable::add(const ComponentTerms& c) {
   dxx.push_back(c.direction.x() * c.direction.x());
   dxy.push_back(c.direction.x() * c.direction.y());
   dyy.push_back(c.direction.y() * c.direction.y());
+  k_amplitude.push_back(c.k * c.amplitude);
+  k_velocity.push_back(c.k * c.velocity);
+  k_acceleration.push_back(c.k * c.acceleration);
+  k_pressure.push_back(c.k * c.pressure);
 }
 
 void ComponentScratch::resize(std::size_t n) {

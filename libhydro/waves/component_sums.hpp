@@ -18,6 +18,9 @@ struct ComponentTable {
   std::vector<double> kx, ky, k, omega, phase, amplitude, velocity, acceleration, pressure;
   std::vector<double> bed, over_sinh, over_cosh;
   std::vector<double> dx, dy, dxx, dxy, dyy;  // the heading's direction d and its products
+  // k times amplitude, velocity, acceleration and pressure (long_crested_sums.hpp)
+  std::vector<double> k_amplitude, k_velocity, k_acceleration, k_pressure;
+  bool k_ascending = true;  // k never decreases from one component to the next
   void add(const ComponentTerms& c);
   std::size_t size() const { return k.size(); }
 };

@@ -3,11 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "libhydro/waves/long_crested_sums.hpp"
+
 namespace flexmoor::hydro {
 
 void Sea::addComponent(const WaveComponent& c) {
   components_.push_back(c);
-  table_.add(ComponentTerms::of(c, water_.depth, water_.density, water_.gravity));
+  const ComponentTerms terms = ComponentTerms::of(c, water_.depth, water_.density, water_.gravity);
+  if (table_.size() > 0 &&
+      (terms.direction.x() != table_.dx[0] || terms.direction.y() != table_.dy[0]))
+    long_crested_ = false;
+  table_.add(terms);
   if (front_) fronts_.push_back(componentFront(*front_, c, water_.depth, water_.gravity));
 }
 
@@ -18,12 +24,16 @@ void Sea::setFront(const WaveFront& front) {
     fronts_.push_back(componentFront(front, c, water_.depth, water_.gravity));
 }
 
+Envelope Sea::rampAt(double t) const { return ramp_ ? rampEnvelope(*ramp_, t) : Envelope(); }
+
 // The components' phases and envelopes at x, t into s (the front's per component along its
-// heading, times the ramp's), and the elevation with its gradient.
+// heading, times the ramp's; with one envelope for all, the ramp's alone, not written out), and
+// the elevation with its gradient.
 double Sea::phases(const Eigen::Vector3d& x, double t, ComponentScratch& s,
                    Eigen::Vector3d* elevation_gradient) const {
   componentPhases(table_, x, t, s);
-  const Envelope ramp = ramp_ ? rampEnvelope(*ramp_, t) : Envelope();
+  const Envelope ramp = rampAt(t);
+  if (oneEnvelope()) return longCrestedElevation(table_, s, ramp, elevation_gradient);
   for (std::size_t i = 0; i < table_.size(); ++i) {
     Envelope e = ramp;
     if (front_)
@@ -66,7 +76,10 @@ FluidPoint Sea::evaluate(const Eigen::Vector3d& x, double t, FluidGradient* grad
     }
   }
   LinearKinematics k;
-  kinematicsSum(table_, scratch, z, gradient != nullptr, k);
+  if (oneEnvelope())
+    longCrestedKinematics(table_, scratch, rampAt(t), z, water_.depth, gradient != nullptr, k);
+  else
+    kinematicsSum(table_, scratch, z, gradient != nullptr, k);
   const double rho_g = water_.density * water_.gravity;
   p.velocity = k.velocity + current_.velocity(z);
   p.acceleration = k.acceleration;

@@ -10,7 +10,8 @@
 // What of each component does not change with the point and the time (k cos beta, k sin beta,
 // the depth factors, the front's speed and ramp) is computed once as components are added, so a
 // point costs one sincos and one exp per component, with its gradient or without, taken over
-// all components at once (component_sums.hpp).
+// all components at once (component_sums.hpp); a long-crested sea without a front (one heading,
+// one envelope for all components) by the shorter sums of long_crested_sums.hpp.
 #include <Eigen/Core>
 #include <optional>
 #include <vector>
@@ -73,10 +74,14 @@ class Sea {
   double phases(const Eigen::Vector3d& x, double t, ComponentScratch& s,
                 Eigen::Vector3d* elevation_gradient) const;
   FluidPoint evaluate(const Eigen::Vector3d& x, double t, FluidGradient* gradient) const;
+  Envelope rampAt(double t) const;  // the ramp's envelope, or 1
+  // Every component along one heading and no front: long_crested_sums.hpp's sums.
+  bool oneEnvelope() const { return long_crested_ && !front_; }
 
   Water water_;
   std::vector<WaveComponent> components_;
-  ComponentTable table_;  // the components' terms
+  ComponentTable table_;      // the components' terms
+  bool long_crested_ = true;  // every component along the first's heading
   std::optional<WaveFront> front_;
   std::vector<ComponentFront> fronts_;  // one per component when there is a front
   std::optional<TimeRamp> ramp_;
