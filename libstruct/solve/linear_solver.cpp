@@ -4,9 +4,8 @@ namespace flexmoor::solve {
 
 bool LinearSolver::factorize(const model::SparseMatrix& A) {
   if (method_ == Method::Undecided || (method_ == Method::Banded && !band_lu_.fits(A))) {
-    const Band band = bandOf(A);
-    method_ = bandIsNarrow(A, band) ? Method::Banded : Method::Sparse;
-    if (method_ == Method::Banded) band_lu_.analyzePattern(A, band);
+    band_lu_.analyzePattern(A);
+    method_ = bandIsNarrow(A, band_lu_.band()) ? Method::Banded : Method::Sparse;
   }
   if (method_ == Method::Banded) return band_lu_.factorize(A);
   if (kind_ == MatrixKind::Symmetric) {
