@@ -188,16 +188,22 @@ bool BandedLu::factorizeBand() {
 }
 
 Eigen::VectorXd BandedLu::solve(const Eigen::VectorXd& b) const {
-  if (position_.empty()) {
-    Eigen::VectorXd x = b;
-    solveBand(x.data());
-    return x;
-  }
-  Eigen::VectorXd y(n_), x(n_);
-  for (int i = 0; i < n_; ++i) y(position_[i]) = b(i);
-  solveBand(y.data());
-  for (int i = 0; i < n_; ++i) x(i) = y(position_[i]);
+  Eigen::VectorXd x;
+  solve(b, x);
   return x;
+}
+
+void BandedLu::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  if (position_.empty()) {
+    x = b;
+    solveBand(x.data());
+    return;
+  }
+  permuted_.resize(n_);
+  for (int i = 0; i < n_; ++i) permuted_[position_[i]] = b(i);
+  solveBand(permuted_.data());
+  x.resize(n_);
+  for (int i = 0; i < n_; ++i) x(i) = permuted_[position_[i]];
 }
 
 void BandedLu::solveBand(double* x) const {

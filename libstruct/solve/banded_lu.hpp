@@ -48,8 +48,9 @@ class BandedLu {
   // singular: a pivot exactly zero (as UMFPACK tells; a nearly singular matrix, the tangent at a
   // limit point that arc length passes, still factorises).
   bool factorize(const model::SparseMatrix& A);
-  // x = A^-1 b.
+  // x = A^-1 b (the second into x, whose storage is reused).
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
 
  private:
   int n_ = 0, kl_ = 0, ku_ = 0, ldab_ = 1;
@@ -58,6 +59,7 @@ class BandedLu {
   std::vector<int> slot_;      // per nonzero of A (in A's storage order), its place in ab_
   std::vector<double> ab_;     // LAPACK band storage, (2 kl + ku + 1) x n, column-major
   std::vector<int> pivots_;    // row j was interchanged with row pivots_[j] (0-based)
+  mutable std::vector<double> permuted_;  // the right-hand side in the band's order, reused
 
   bool factorizeBand();
   // The band solve of the permuted system in place.
