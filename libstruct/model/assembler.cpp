@@ -151,8 +151,13 @@ void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load,
   Eigen::VectorXd& p = element_load_;
   if (J) element_jacobians_.summed = J->summed;
   if (!model_.gravity().isZero()) {
-    model_.element(e).bodyLoad(context(state, e), model_.gravity(), p);
-    load += p;
+    if (gravity_loads_.empty() || gravity_of_loads_ != model_.gravity()) {
+      gravity_of_loads_ = model_.gravity();
+      gravity_loads_.resize(model_.elementCount());
+      for (int i = 0; i < model_.elementCount(); ++i)
+        model_.element(i).bodyLoad(context(state, i), model_.gravity(), gravity_loads_[i]);
+    }
+    load += gravity_loads_[e];
   }
   const double lambda = state.load_factor;
   if (model_.element(e).takesLineLoads())

@@ -155,7 +155,12 @@ class Assembler {
   mutable element::LoadMatrices element_jacobians_;  // one element's load matrices, reused
   mutable Eigen::VectorXd element_load_;             // one element's share of a load, reused
   mutable Eigen::MatrixXd element_tangent_;          // one element's tangent, reused
-  mutable Eigen::VectorXd element_acceleration_;     // inertiaForce's element vectors, reused
+  // Every element's gravity load, computed on first use and again when the model's gravity
+  // changes: it depends on the reference configuration alone (total Lagrangian), not on the
+  // state.
+  mutable std::vector<Eigen::VectorXd> gravity_loads_;
+  mutable Eigen::Vector3d gravity_of_loads_ = Eigen::Vector3d::Zero();
+  mutable Eigen::VectorXd element_acceleration_;  // inertiaForce's element vectors, reused
   mutable ForceMemo internal_memo_, external_memo_;
 };
 
