@@ -78,6 +78,13 @@ void CableElement<N>::dampingForce(const ElementContext& c, Eigen::VectorXd& f,
     const AxialRate p = axialRate(Y * dL, V * dL);
     for (int I = 0; I < N; ++I) f.template segment<3>(3 * I) += (weight * dL(I)) * p.value;
     if (!J) continue;
+    if (J->summed) {
+      const Matrix3d sum = J->summed->stiffness * p.d_position + J->summed->damping * p.d_velocity;
+      for (int I = 0; I < N; ++I)
+        for (int K = 0; K < N; ++K)
+          J->stiffness.template block<3, 3>(3 * I, 3 * K) += (weight * dL(I) * dL(K)) * sum;
+      continue;
+    }
     for (int I = 0; I < N; ++I)
       for (int K = 0; K < N; ++K) {
         const double w = weight * dL(I) * dL(K);
@@ -190,6 +197,17 @@ bool CableElement<N>::lineLoad(const ElementContext& c, const model::LineLoad& l
     // The force at the point depends on node K through y = sum L_K y_K and y,1 = sum L_K' y_K.
     std::array<Matrix3d, N> by_node;
     for (int K = 0; K < N; ++K) by_node[K] = Lv(K) * d_position + dL(K) * d_axis;
+    if (J->summed) {
+      // k (-dp/du) + c (-dp/du') + m (-dp/du''): node K's share L_I (k by_node[K] + L_K ds
+      // (c df/du' + m df/du'')).
+      const LoadMatrices::Weights& w = *J->summed;
+      const Matrix3d rates = ds * (w.damping * f.d_velocity + w.mass * f.d_acceleration);
+      for (int K = 0; K < N; ++K) by_node[K] = w.stiffness * by_node[K] + Lv(K) * rates;
+      for (int I = 0; I < N; ++I)
+        for (int K = 0; K < N; ++K)
+          J->stiffness.template block<3, 3>(3 * I, 3 * K) -= Lv(I) * by_node[K];
+      continue;
+    }
     for (int I = 0; I < N; ++I)
       for (int K = 0; K < N; ++K)
         J->stiffness.template block<3, 3>(3 * I, 3 * K) -= Lv(I) * by_node[K];

@@ -4,6 +4,7 @@
 // (x, y, z of its first node, then of its second, ...).
 #include <Eigen/Core>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,18 @@ struct ElementResult {
 // stiffness -dp/du, damping -dp/du', mass -dp/du'' (each 3n x 3n, in the element's dofs).
 struct LoadMatrices {
   Eigen::MatrixXd stiffness, damping, mass;
+  // When set, the element does not keep the three apart: it puts their weighted sum
+  // k (-dp/du) + c (-dp/du') + m (-dp/du'') into `stiffness` alone, point by point (what a time
+  // step's effective tangent takes of them, Eq. 4.63), and leaves `damping` and `mass` as they
+  // are: one matrix to fill and to scatter instead of three.
+  struct Weights {
+    double stiffness = 1.0, damping = 0.0, mass = 0.0;
+  };
+  std::optional<Weights> summed;
+  // Zero n x n matrices: the three, or `stiffness` alone when summed.
   void setZero(int n) {
     stiffness.setZero(n, n);
+    if (summed) return;
     damping.setZero(n, n);
     mass.setZero(n, n);
   }
@@ -113,7 +124,8 @@ class Element {
         f, dfdu);
   }
   // A surface load's nodal forces f and, when J is given, its matrices: stiffness -df/du
-  // (damping and mass zero: the pressure does not depend on the motion's rates).
+  // (damping and mass zero: the pressure does not depend on the motion's rates; J.summed: the
+  // stiffness times its weight).
   void surfaceLoad(const ElementContext& c, const model::SurfaceLoad& load, Eigen::VectorXd& f,
                    LoadMatrices* J) const {
     const auto field = [&load](const model::LoadPoint& p, bool jacobians) {
@@ -122,7 +134,7 @@ class Element {
     if (!J) return followerPressure(c, field, f, nullptr);
     J->setZero(dofCount());
     followerPressure(c, field, f, &J->stiffness);
-    J->stiffness = -J->stiffness;
+    J->stiffness *= J->summed ? -J->summed->stiffness : -1.0;
   }
   // The result at the state into `out`, whose storage is reused: a record of a long run
   // allocates nothing.

@@ -56,9 +56,16 @@ void SpringElement::dampingForce(const ElementContext& c, Eigen::VectorXd& f,
   f.head<3>() = -damping_ * p.value;
   f.tail<3>() = damping_ * p.value;
   if (!J) return;
+  const Matrix3d sum =
+      J->summed ? Matrix3d(J->summed->stiffness * p.d_position + J->summed->damping * p.d_velocity)
+                : Matrix3d::Zero();
   for (int I = 0; I < 2; ++I)
     for (int K = 0; K < 2; ++K) {
       const double sign = I == K ? damping_ : -damping_;
+      if (J->summed) {
+        J->stiffness.block<3, 3>(3 * I, 3 * K) = sign * sum;
+        continue;
+      }
       J->stiffness.block<3, 3>(3 * I, 3 * K) = sign * p.d_position;
       J->damping.block<3, 3>(3 * I, 3 * K) = sign * p.d_velocity;
     }

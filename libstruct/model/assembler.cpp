@@ -96,37 +96,27 @@ void Assembler::zeroLoadMatrices(LoadMatrices& J) const {
   zeroOnPattern(J.mass);
 }
 
-template <class Matrix>
-void Assembler::scatterLoadMatrices(const std::vector<int>& slots, const Matrix* stiffness,
-                                    const Matrix* damping, const Matrix* mass, LoadMatrices& J,
-                                    double scale) const {
+void Assembler::scatterNodeMatrices(const std::vector<int>& slots, const PointForce& f,
+                                    LoadMatrices& J, double scale) const {
   if (!J.summed) {
-    if (stiffness) scatterMatrix(slots, *stiffness, J.stiffness, scale);
-    if (damping) scatterMatrix(slots, *damping, J.damping, scale);
-    if (mass) scatterMatrix(slots, *mass, J.mass, scale);
+    scatterMatrix(slots, f.d_position, J.stiffness, scale);
+    scatterMatrix(slots, f.d_velocity, J.damping, scale);
+    scatterMatrix(slots, f.d_acceleration, J.mass, scale);
     return;
   }
   const LoadMatrices::Weights& w = *J.summed;
-  const Matrix* parts[] = {stiffness, damping, mass};
-  const double weights[] = {w.stiffness, w.damping, w.mass};
-  // A fixed-size (a node's) sum on the stack, an element's in storage that is reused.
-  Matrix fixed_size;
-  Matrix& sum = [&]() -> Matrix& {
-    if constexpr (Matrix::RowsAtCompileTime == Eigen::Dynamic)
-      return weighted_;
-    else
-      return fixed_size;
-  }();
-  bool first = true;
-  for (int i = 0; i < 3; ++i) {
-    if (!parts[i] || weights[i] == 0.0) continue;
-    if (first)
-      sum = weights[i] * *parts[i];
-    else
-      sum += weights[i] * *parts[i];
-    first = false;
-  }
-  if (!first) scatterMatrix(slots, sum, J.stiffness, scale);
+  const Eigen::Matrix3d sum =
+      w.stiffness * f.d_position + w.damping * f.d_velocity + w.mass * f.d_acceleration;
+  scatterMatrix(slots, sum, J.stiffness, scale);
+}
+
+void Assembler::scatterElementMatrices(const std::vector<int>& slots,
+                                       const element::LoadMatrices& k, LoadMatrices& J,
+                                       double scale) const {
+  scatterMatrix(slots, k.stiffness, J.stiffness, scale);
+  if (J.summed) return;
+  scatterMatrix(slots, k.damping, J.damping, scale);
+  scatterMatrix(slots, k.mass, J.mass, scale);
 }
 
 void Assembler::internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const {
@@ -134,7 +124,7 @@ void Assembler::internalForce(const State& state, Eigen::VectorXd& force, Sparse
   if (K) zeroOnPattern(*K);
   ForceMemo& memo = internal_memo_;
   memo.elements.resize(model_.elementCount());
-  Eigen::MatrixXd k;
+  Eigen::MatrixXd& k = element_tangent_;
   for (int e = 0; e < model_.elementCount(); ++e) {
     Eigen::VectorXd& f = memo.elements[e];
     model_.element(e).internalForce(context(state, e), f, K ? &k : nullptr);
@@ -158,10 +148,16 @@ bool Assembler::sameState(const ForceMemo& m, const State& s) {
 void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load,
                             LoadMatrices* J) const {
   load.setZero(model_.element(e).dofCount());
-  Eigen::VectorXd p;
+  Eigen::VectorXd& p = element_load_;
+  if (J) element_jacobians_.summed = J->summed;
   if (!model_.gravity().isZero()) {
-    model_.element(e).bodyLoad(context(state, e), model_.gravity(), p);
-    load += p;
+    if (gravity_loads_.empty() || gravity_of_loads_ != model_.gravity()) {
+      gravity_of_loads_ = model_.gravity();
+      gravity_loads_.resize(model_.elementCount());
+      for (int i = 0; i < model_.elementCount(); ++i)
+        model_.element(i).bodyLoad(context(state, i), model_.gravity(), gravity_loads_[i]);
+    }
+    load += gravity_loads_[e];
   }
   const double lambda = state.load_factor;
   if (model_.element(e).takesLineLoads())
@@ -171,9 +167,7 @@ void Assembler::elementLoad(const State& state, int e, Eigen::VectorXd& load,
                                       jacobians ? &element_jacobians_ : nullptr))
         continue;  // zero on this element
       load += p;
-      if (!jacobians) continue;
-      const element::LoadMatrices& k = element_jacobians_;
-      scatterLoadMatrices(slot_[e], &k.stiffness, &k.damping, &k.mass, *J, lambda);
+      if (jacobians) scatterElementMatrices(slot_[e], element_jacobians_, *J, lambda);
     }
   load *= lambda;
 }
@@ -204,9 +198,7 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load, LoadMatr
     const PointForce f =
         node_loads[i]->evaluate(nodePoint(state, node_loads[i]->node()), jacobians);
     load.segment<3>(3 * node_loads[i]->node()) += lambda * f.force;
-    if (!jacobians) continue;
-    scatterLoadMatrices(node_slot_[i], &f.d_position, &f.d_velocity, &f.d_acceleration, *J,
-                        -lambda);
+    if (jacobians) scatterNodeMatrices(node_slot_[i], f, *J, -lambda);
   }
   for (const PressureLoad& pressure : model_.pressures()) {
     const double value = pressureFactor(pressure, state);
@@ -218,14 +210,14 @@ void Assembler::externalLoad(const State& state, Eigen::VectorXd& load, LoadMatr
   }
   for (const SurfaceLoadOn& surface : model_.surfaceLoads()) {
     const bool jacobians = J && surface.load->stiff();
+    if (J) element_jacobians_.summed = J->summed;
     for (int e : surface.elements) {
       model_.element(e).surfaceLoad(context(state, e), *surface.load, p,
                                     jacobians ? &element_jacobians_ : nullptr);
       const auto& index = full_index_[e];
       for (size_t a = 0; a < index.size(); ++a) load(index[a]) += lambda * p(a);
-      if (jacobians)
-        scatterLoadMatrices<Eigen::MatrixXd>(slot_[e], &element_jacobians_.stiffness, nullptr,
-                                             nullptr, *J, lambda);
+      // Stiffness alone (the pressure does not depend on the rates); summed: times its weight.
+      if (jacobians) scatterMatrix(slot_[e], element_jacobians_.stiffness, J->stiffness, lambda);
     }
   }
   memo.valid = true;
@@ -251,14 +243,14 @@ void Assembler::loadMatrices(const State& state, LoadMatrices& J) const {
 void Assembler::dampingForce(const State& state, Eigen::VectorXd& force, LoadMatrices* J) const {
   force.setZero(3 * model_.nodeCount());
   if (J) zeroLoadMatrices(*J);
-  Eigen::VectorXd f;
+  Eigen::VectorXd& f = element_load_;
   element::LoadMatrices& k = element_jacobians_;
+  if (J) k.summed = J->summed;
   for (int e : damped_) {
     model_.element(e).dampingForce(context(state, e), f, J ? &k : nullptr);
     const auto& index = full_index_[e];
     for (size_t a = 0; a < index.size(); ++a) force(index[a]) += f(a);
-    if (!J) continue;
-    scatterLoadMatrices<Eigen::MatrixXd>(slot_[e], &k.stiffness, &k.damping, nullptr, *J, 1.0);
+    if (J) scatterElementMatrices(slot_[e], k, *J, 1.0);
   }
 }
 
@@ -289,7 +281,7 @@ std::vector<Eigen::MatrixXd> Assembler::elementMasses(element::MassKind kind) co
 void Assembler::inertiaForce(const std::vector<Eigen::MatrixXd>& masses, const State& state,
                              Eigen::VectorXd& force) const {
   force.setZero(3 * model_.nodeCount());
-  Eigen::VectorXd a, f;
+  Eigen::VectorXd &a = element_acceleration_, &f = element_load_;
   for (int e = 0; e < model_.elementCount(); ++e) {
     const auto& index = full_index_[e];
     a.resize(index.size());
@@ -308,12 +300,18 @@ void Assembler::mass(const State& state, element::MassKind kind, SparseMatrix& M
   }
 }
 
-Eigen::VectorXd Assembler::restrictToFree(const Eigen::VectorXd& full) const {
-  Eigen::VectorXd r(model_.equationCount());
+Eigen::VectorXd Assembler::restrictToFree(const Eigen::Ref<const Eigen::VectorXd>& full) const {
+  Eigen::VectorXd r;
+  restrictToFree(full, r);
+  return r;
+}
+
+void Assembler::restrictToFree(const Eigen::Ref<const Eigen::VectorXd>& full,
+                               Eigen::VectorXd& free) const {
+  free.resize(model_.equationCount());
   for (int n = 0; n < model_.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k)
-      if (const int eq = model_.equation(n, k); eq >= 0) r(eq) = full(3 * n + k);
-  return r;
+      if (const int eq = model_.equation(n, k); eq >= 0) free(eq) = full(3 * n + k);
 }
 
 void Assembler::addFree(const Eigen::VectorXd& free_values, NodalField& field) const {

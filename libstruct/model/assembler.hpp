@@ -19,10 +19,9 @@ struct LoadMatrices {
   // When set, the three are not kept apart: every element's (and node's) three matrices go
   // into `stiffness` as one weighted sum, k K + c C + m M (what a time step's effective tangent
   // takes of them, Eq. 4.63), and `damping` and `mass` stay as they are. One sparse matrix to
-  // zero and one scatter an element instead of three.
-  struct Weights {
-    double stiffness = 1.0, damping = 0.0, mass = 0.0;
-  };
+  // zero and one scatter an element instead of three; the elements sum their own (at each
+  // integration point, element::LoadMatrices::summed).
+  using Weights = element::LoadMatrices::Weights;
   std::optional<Weights> summed;
 };
 
@@ -61,8 +60,10 @@ class Assembler {
   // Mass matrix on the free dofs, in the same pattern as the tangent (Eq. 4.49).
   void mass(const State& state, element::MassKind kind, SparseMatrix& M) const;
 
-  // Free-dof part of a full vector, and the inverse scatter into a nodal field.
-  Eigen::VectorXd restrictToFree(const Eigen::VectorXd& full) const;
+  // Free-dof part of a full vector (into `free`, whose storage is reused), and the inverse
+  // scatter into a nodal field.
+  Eigen::VectorXd restrictToFree(const Eigen::Ref<const Eigen::VectorXd>& full) const;
+  void restrictToFree(const Eigen::Ref<const Eigen::VectorXd>& full, Eigen::VectorXd& free) const;
   void addFree(const Eigen::VectorXd& free_values, NodalField& field) const;
   // Sets the constrained dofs to their prescribed value times the load factor, or to their
   // history at the state's time (with its velocity and acceleration).
@@ -105,12 +106,14 @@ class Assembler {
   void zeroOnPattern(SparseMatrix& m) const;
   // zeroOnPattern of the matrices of J that it fills (J.summed: its stiffness alone).
   void zeroLoadMatrices(LoadMatrices& J) const;
-  // Adds scale times an element's or node's matrices (a null one is zero) into J: each into its
-  // own, or their weighted sum into J.stiffness (J.summed).
-  template <class Matrix>
-  void scatterLoadMatrices(const std::vector<int>& slots, const Matrix* stiffness,
-                           const Matrix* damping, const Matrix* mass, LoadMatrices& J,
+  // Adds scale times a node's matrices into J: each into its own, or their weighted sum into
+  // J.stiffness (J.summed).
+  void scatterNodeMatrices(const std::vector<int>& slots, const PointForce& f, LoadMatrices& J,
                            double scale) const;
+  // Adds scale times an element's matrices into J: each into its own, or the weighted sum the
+  // element made (J.summed: element_jacobians_.summed set) into J.stiffness.
+  void scatterElementMatrices(const std::vector<int>& slots, const element::LoadMatrices& k,
+                              LoadMatrices& J, double scale) const;
   // Work space of one sweep over the elements at one state, and whether the memos below hold
   // that state's forces (asked once a sweep).
   struct EndForceScratch {
@@ -150,7 +153,14 @@ class Assembler {
   mutable std::vector<Eigen::MatrixXd> consistent_masses_;
   mutable EndForceScratch results_scratch_;  // elementResults' work space, kept between calls
   mutable element::LoadMatrices element_jacobians_;  // one element's load matrices, reused
-  mutable Eigen::MatrixXd weighted_;  // their weighted sum (LoadMatrices::summed), reused
+  mutable Eigen::VectorXd element_load_;             // one element's share of a load, reused
+  mutable Eigen::MatrixXd element_tangent_;          // one element's tangent, reused
+  // Every element's gravity load, computed on first use and again when the model's gravity
+  // changes: it depends on the reference configuration alone (total Lagrangian), not on the
+  // state.
+  mutable std::vector<Eigen::VectorXd> gravity_loads_;
+  mutable Eigen::Vector3d gravity_of_loads_ = Eigen::Vector3d::Zero();
+  mutable Eigen::VectorXd element_acceleration_;  // inertiaForce's element vectors, reused
   mutable ForceMemo internal_memo_, external_memo_;
 };
 

@@ -8,12 +8,22 @@ namespace flexmoor::solve {
 
 Residual outOfBalance(const model::Assembler& assembler, const model::State& state,
                       model::SparseMatrix* K, model::LoadMatrices* J) {
-  Eigen::VectorXd F, P;
+  BalanceScratch scratch;
+  Residual r;
+  outOfBalance(assembler, state, K, J, scratch, r);
+  return r;
+}
+
+void outOfBalance(const model::Assembler& assembler, const model::State& state,
+                  model::SparseMatrix* K, model::LoadMatrices* J, BalanceScratch& scratch,
+                  Residual& r) {
+  Eigen::VectorXd &F = scratch.internal, &P = scratch.external;
   assembler.internalForce(state, F, K);
   assembler.externalLoad(state, P, J);
-  Residual r;
-  r.free = assembler.restrictToFree(P - F);
+  scratch.difference = P - F;
+  assembler.restrictToFree(scratch.difference, r.free);
   r.scale = std::max(P.norm(), F.norm());
+  r.floor = 0.0;
   if (K && K->rows() > 0 && r.scale > 0.0) {
     const model::NodalField x = assembler.model().reference() + state.displacement;
     const double rms = std::sqrt(x.squaredNorm() / std::max<Eigen::Index>(x.size(), 1));
@@ -21,7 +31,6 @@ Residual outOfBalance(const model::Assembler& assembler, const model::State& sta
     r.floor = std::numeric_limits<double>::epsilon() * rms * k *
               std::sqrt(static_cast<double>(K->rows())) / r.scale;
   }
-  return r;
 }
 
 Residual staticOutOfBalance(const model::Assembler& assembler, const model::State& state,

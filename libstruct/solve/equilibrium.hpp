@@ -21,6 +21,14 @@ struct Residual {
 // motion-dependent loads' matrices when J is (from the same evaluation of the loads).
 Residual outOfBalance(const model::Assembler& assembler, const model::State& state,
                       model::SparseMatrix* K, model::LoadMatrices* J = nullptr);
+// The same into `r`, with the full force vectors in `scratch`: storage that is reused, so an
+// iteration of a time step allocates nothing.
+struct BalanceScratch {
+  Eigen::VectorXd internal, external, difference;
+};
+void outOfBalance(const model::Assembler& assembler, const model::State& state,
+                  model::SparseMatrix* K, model::LoadMatrices* J, BalanceScratch& scratch,
+                  Residual& r);
 
 // outOfBalance for a static or relaxation solve: with K, the static tangent, K_T plus the
 // motion-dependent loads' stiffness -dP/du (load_point.hpp), from the same evaluation of the

@@ -4,9 +4,8 @@ namespace flexmoor::solve {
 
 bool LinearSolver::factorize(const model::SparseMatrix& A) {
   if (method_ == Method::Undecided || (method_ == Method::Banded && !band_lu_.fits(A))) {
-    const Band band = bandOf(A);
-    method_ = bandIsNarrow(A, band) ? Method::Banded : Method::Sparse;
-    if (method_ == Method::Banded) band_lu_.analyzePattern(A, band);
+    band_lu_.analyzePattern(A);
+    method_ = bandIsNarrow(A, band_lu_.band()) ? Method::Banded : Method::Sparse;
   }
   if (method_ == Method::Banded) return band_lu_.factorize(A);
   if (kind_ == MatrixKind::Symmetric) {
@@ -38,8 +37,18 @@ bool LinearSolver::factorizeLu(const model::SparseMatrix& A) {
 }
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) const {
-  if (method_ == Method::Banded) return band_lu_.solve(b);
-  return use_lu_ ? Eigen::VectorXd(lu_.solve(b)) : Eigen::VectorXd(llt_.solve(b));
+  Eigen::VectorXd x;
+  solve(b, x);
+  return x;
+}
+
+void LinearSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  if (method_ == Method::Banded)
+    band_lu_.solve(b, x);
+  else if (use_lu_)
+    x = lu_.solve(b);
+  else
+    x = llt_.solve(b);
 }
 
 }  // namespace flexmoor::solve

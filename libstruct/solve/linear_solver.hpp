@@ -28,6 +28,8 @@ class LinearSolver {
   // when A is singular.
   bool factorize(const model::SparseMatrix& A);
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // The same into x, whose storage is reused (the band LU's solve allocates nothing).
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   // Whether the matrices are factorised as banded (decided at the first factorisation).
   bool banded() const { return method_ == Method::Banded; }
   // Entries of the Cholesky factor L after the symbolic analysis (its memory is 12 bytes each:

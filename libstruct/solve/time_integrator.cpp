@@ -51,17 +51,18 @@ VectorXd TimeIntegrator::damping(const VectorXd& v_free) const {
   return f;
 }
 
-Residual TimeIntegrator::balance(const model::State& x, bool tangent, bool loads) {
-  Residual R = outOfBalance(assembler_, x, tangent ? &K_ : nullptr, loads ? &loads_ : nullptr);
+void TimeIntegrator::balance(const model::State& x, bool tangent, bool loads, Residual& R) {
+  outOfBalance(assembler_, x, tangent ? &K_ : nullptr, loads ? &loads_ : nullptr, scratch_.balance,
+               R);
   if (tangent && o_.pressure_load_stiffness) assembler_.subtractLoadStiffness(x, K_);
   if (assembler_.hasDamping()) {
-    VectorXd viscous;
-    assembler_.dampingForce(x, viscous, tangent ? &viscous_ : nullptr);
-    R.free -= assembler_.restrictToFree(viscous);
+    assembler_.dampingForce(x, scratch_.viscous, tangent ? &viscous_ : nullptr);
+    assembler_.restrictToFree(scratch_.viscous, scratch_.free);
+    R.free -= scratch_.free;
   }
-  R.free -= damping(assembler_.restrictToFree(asVector(x.velocity)));
+  if (o_.rayleigh_mass != 0.0 || o_.rayleigh_stiffness != 0.0)
+    R.free -= damping(assembler_.restrictToFree(asVector(x.velocity)));
   if (loads) ++report_.load_matrix_updates;
-  return R;
 }
 
 void TimeIntegrator::summedWeights(double h) {
@@ -138,7 +139,8 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   const bool loads_missing = motion_loads_ && !(kept && kept_.loads);
   VectorXd previous_balance;  // HHT: P_n - F_n - F_d,n - C v_n
   if (tangent_missing || loads_missing || (alpha_ != 0.0 && !kept)) {
-    const Residual start = balance(s, tangent_missing, loads_missing);
+    Residual& start = scratch_.residual;
+    balance(s, tangent_missing, loads_missing, start);
     if (tangent_missing) floor_ = start.floor * start.scale / std::max(start.scale, force_scale_);
     previous_balance = start.free;
   } else {
@@ -157,22 +159,25 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   VectorXd u = self_corrective ? u_n : VectorXd(u_n + h * v_n);
   trace_.start();
   singular_ = false;
-  VectorXd du;                     // the last increment taken
-  double previous_residual = 0.0;  // the residual before it
-  int backtracks = 0;              // halvings of the last Newton increment so far
+  VectorXd& du = scratch_.increment;  // the last increment taken
+  double previous_residual = 0.0;     // the residual before it
+  int backtracks = 0;                 // halvings of the last Newton increment so far
+  VectorXd &acc = scratch_.acceleration, &v = scratch_.velocity;
+  VectorXd &balance_here = scratch_.balance_here, &inertia_full = scratch_.inertia;
+  Residual& R = scratch_.residual;
   for (int it = 0; it <= o_.max_iterations; ++it) {
-    const VectorXd acc = a0 * (u - u_n) - a1 * v_n - a2 * acc_n;           // Eq. 4.57
-    const VectorXd v = v_n + h * ((1.0 - gamma_) * acc_n + gamma_ * acc);  // Eq. 4.58
+    acc = a0 * (u - u_n) - a1 * v_n - a2 * acc_n;           // Eq. 4.57
+    v = v_n + h * ((1.0 - gamma_) * acc_n + gamma_ * acc);  // Eq. 4.58
     setFree(model_, u, next.displacement);
     setFree(model_, v, next.velocity);
     setFree(model_, acc, next.acceleration);
     const bool tangent = it > 0 && tangent_iterates;
     const bool loads = it > 0 && loads_iterate;
-    Residual R = balance(next, tangent, loads);
-    const VectorXd balance_here = R.free;
-    VectorXd inertia_full;
+    balance(next, tangent, loads, R);
+    balance_here = R.free;
     assembler_.inertiaForce(masses_, next, inertia_full);
-    R.free = (1.0 + alpha_) * R.free - assembler_.restrictToFree(inertia_full);  // Eq. 4.63
+    assembler_.restrictToFree(inertia_full, scratch_.free);
+    R.free = (1.0 + alpha_) * R.free - scratch_.free;  // Eq. 4.63
     if (alpha_ != 0.0) R.free -= alpha_ * previous_balance;
     // The forces pass through zero twice a period, so the residual is measured against the
     // largest force seen in the run, not the instantaneous one (round-off would stall Newton).
@@ -214,7 +219,7 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
       factorEffectiveTangent(h);
       if (singular_) return false;
     }
-    du = linear_.solve(R.free);
+    linear_.solve(R.free, du);
     u += du;
     trace_.increment(model_, du);
     ++report_.iterations;
@@ -292,8 +297,9 @@ void TimeIntegrator::initialAcceleration(model::State& s) {
   VectorXd inertia_full;
   assembler_.inertiaForce(masses_, s, inertia_full);  // prescribed accelerations only
   loads_.summed.reset();  // the added mass alone; the first step sums them again
-  const VectorXd rhs =
-      balance(s, false, model_.hasMotionLoads()).free - assembler_.restrictToFree(inertia_full);
+  Residual start;
+  balance(s, false, model_.hasMotionLoads(), start);
+  const VectorXd rhs = start.free - assembler_.restrictToFree(inertia_full);
   model::SparseMatrix mass = M_;
   if (model_.hasMotionLoads()) mass.coeffs() += loads_.mass.coeffs();
   LinearSolver mass_solver(model_.hasMotionLoads() ? MatrixKind::Unsymmetric

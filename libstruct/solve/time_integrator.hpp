@@ -71,9 +71,9 @@ class TimeIntegrator {
   void initialAcceleration(model::State& s);
   Eigen::VectorXd damping(const Eigen::VectorXd& v_free) const;
   // The balance P - F - F_d - C v at x on the free dofs (no inertia), with its scale and floor
-  // (outOfBalance); from the same sweep, the tangent K_ and the internal damping's viscous_ when
-  // `tangent`, the motion loads' loads_ when `loads`.
-  Residual balance(const model::State& x, bool tangent, bool loads);
+  // (outOfBalance), into R; from the same sweep, the tangent K_ and the internal damping's
+  // viscous_ when `tangent`, the motion loads' loads_ when `loads`.
+  void balance(const model::State& x, bool tangent, bool loads, Residual& R);
   // Sets the weights in which viscous_ and loads_ take their matrices for a step of h: their
   // shares of the effective tangent (factorEffectiveTangent).
   void summedWeights(double h);
@@ -108,6 +108,12 @@ class TimeIntegrator {
     Eigen::VectorXd balance;
   } kept_;
   bool singular_ = false;  // the last step tried had a singular effective tangent
+  // Work space of the iterations, whose storage is reused: a Newton iteration allocates nothing.
+  struct Scratch {
+    BalanceScratch balance;
+    Residual residual;
+    Eigen::VectorXd viscous, inertia, free, acceleration, velocity, balance_here, increment;
+  } scratch_;
 };
 
 }  // namespace flexmoor::solve
