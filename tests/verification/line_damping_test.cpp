@@ -27,6 +27,7 @@
 #include "libstruct/solve/newmark.hpp"
 #include "tests/support/case_files.hpp"
 #include "tests/support/dynamic_models.hpp"
+#include "tests/support/oblique_dashpot.hpp"
 
 namespace flexmoor::test {
 namespace {
@@ -111,14 +112,10 @@ TEST(LineDamping, DampingMatricesMatchCentralDifferences) {
 // by (1.2, 0.4, -0.3) m and moving apart obliquely. Reference, metric and tolerance as above
 // (measured 2.7e-10 in u, 3.0e-14 in u').
 TEST(LineDamping, DashpotMatricesMatchCentralDifferences) {
-  model::NodalField X(3, 2);
-  X.col(0) = Vector3d(0.0, 0.0, 0.0);
-  X.col(1) = Vector3d(1.0, 0.4, -0.3);
-  const element::SpringElement e(0, 1, 1e4, -1.0, material::Compression::Carry, 3e3);
-  model::State state(2);
-  state.displacement.col(1) = Vector3d(0.2, 0.0, 0.0);
-  state.velocity.col(0) = Vector3d(0.1, -0.2, 0.05);
-  state.velocity.col(1) = Vector3d(0.5, 0.3, -0.4);
+  const test::ObliqueDashpot d;
+  const model::NodalField& X = d.X;
+  const element::SpringElement& e = d.element;
+  const model::State& state = d.state;
   const auto [error_u, error_v] = dampingMatrixErrors(e, X, state);
   std::cout << "dashpot: df/du error " << error_u << ", df/du' error " << error_v << "\n";
   EXPECT_LT(error_u, 1e-9);

@@ -15,6 +15,7 @@
 
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/spring_element.hpp"
+#include "tests/support/oblique_dashpot.hpp"
 
 namespace flexmoor::test {
 namespace {
@@ -104,14 +105,10 @@ TEST(SummedLoadMatrices, CableLineLoadAndDamping) {
 }
 
 TEST(SummedLoadMatrices, Dashpot) {
-  model::NodalField X(3, 2);
-  X.col(0) = Vector3d(0.0, 0.0, 0.0);
-  X.col(1) = Vector3d(1.0, 0.4, -0.3);
-  const element::SpringElement e(0, 1, 1e4, -1.0, material::Compression::Carry, 3e3);
-  model::State state(2);
-  state.displacement.col(1) = Vector3d(0.2, 0.0, 0.0);
-  state.velocity.col(0) = Vector3d(0.1, -0.2, 0.05);
-  state.velocity.col(1) = Vector3d(0.5, 0.3, -0.4);
+  const test::ObliqueDashpot d;
+  const model::NodalField& X = d.X;
+  const element::SpringElement& e = d.element;
+  const model::State& state = d.state;
   VectorXd f;
   const double error = summedError([&](element::LoadMatrices& J) {
     e.dampingForce({X, state, 0}, f, &J);
