@@ -16,6 +16,7 @@
 #include "libhydro/signal/welch.hpp"
 #include "libhydro/waves/wave_spectrum.hpp"
 #include "tests/support/cli_run.hpp"
+#include "tests/support/submerged_wire.hpp"
 
 namespace flexmoor::test {
 namespace {
@@ -29,21 +30,8 @@ CliRun plot(const std::string& args) { return flexmoor("plot " + args); }
 // bins): `steps` records of 0.25 s after a static step.
 fs::path runWireInASea(const std::string& name, int steps) {
   const fs::path dir = scratch(name);
-  std::ofstream(dir / "wire.yaml") << R"(units: SI
-title: a wire in a JONSWAP sea
-materials:
-  steel: {type: linear_elastic, E: 2.0e11 Pa}
-sections:
-  wire: {material: steel, area: 1.0e-4 m^2, density: 7850 kg/m^3,
-         hydro: {diameter: 0.0113 m, Cn: 1.2, Ct: 0.02, Ca: 1.0}}
-lines:
-  - {name: cable, from: [0, 0, -20 m], to: [10 m, 0, -20 m], elements: 4, order: 2, section: wire}
-supports:
-  - {node: cable.start, fix: [x, y, z]}
-  - {node: cable.end, fix: [x, y, z], displacement: [-1 m, 0, 0]}
-  - {nodes: cable, fix: [y]}
-water: {density: 1025 kg/m^3, depth: 100 m}
-waves:
+  std::ofstream(dir / "wire.yaml") << "units: SI\ntitle: a wire in a JONSWAP sea\n"
+                                   << submergedWire("-1 m") << R"(waves:
   spectrum: {type: jonswap, Hs: 2 m, Tp: 8 s}
   components: 50
   discretisation: equal

@@ -17,6 +17,7 @@
 #include "libhydro/waves/wave_synthesis.hpp"
 #include "tests/support/case_files.hpp"
 #include "tests/support/cli_run.hpp"
+#include "tests/support/submerged_wire.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -26,21 +27,7 @@ const double kPi = std::acos(-1.0);
 // A 10 m cable 20 m down in 100 m of water; the waves: section appended.
 std::string caseWith(const std::string& waves,
                      const std::string& steps = "  - static: {name: s}\n") {
-  return R"(units: SI
-materials:
-  steel: {type: linear_elastic, E: 2.0e11 Pa}
-sections:
-  wire: {material: steel, area: 1.0e-4 m^2, density: 7850 kg/m^3,
-         hydro: {diameter: 0.0113 m, Cn: 1.2, Ct: 0.02, Ca: 1.0}}
-lines:
-  - {name: cable, from: [0, 0, -20 m], to: [10 m, 0, -20 m], elements: 4, order: 2, section: wire}
-supports:
-  - {node: cable.start, fix: [x, y, z]}
-  - {node: cable.end, fix: [x, y, z], displacement: [0.01 m, 0, 0]}
-  - {nodes: cable, fix: [y]}
-water: {density: 1025 kg/m^3, depth: 100 m}
-)" + waves +
-         "steps:\n" + steps;
+  return "units: SI\n" + test::submergedWire("0.01 m") + waves + "steps:\n" + steps;
 }
 
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
