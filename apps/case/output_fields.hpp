@@ -52,13 +52,15 @@ class OutputFields {
 
   bool has(OutputField f) const { return set_.test(index(f)); }
   void add(OutputField f) { set_.set(index(f)); }
-  // Element results (tensions, resultants) or reactions: what a record needs beyond the state.
-  bool needsResults() const {
-    return has(OutputField::Tension) || has(OutputField::MembraneResultant) ||
-           has(OutputField::Reaction);
+  // Element results (tensions, resultants): a record needs them from an assembly sweep.
+  bool needsElementResults() const {
+    return has(OutputField::Tension) || has(OutputField::MembraneResultant);
   }
-  // The field a netCDF variable of a record belongs to ("position_x": position); none for one
-  // that is not a field's (time, a modes step's variables).
+  // Element results or reactions: what a record needs beyond the state.
+  bool needsResults() const { return needsElementResults() || has(OutputField::Reaction); }
+  // The field a netCDF variable of a record belongs to ("position_x": position; "speed", which
+  // a figure derives from the velocity: velocity); none for one that is not a field's (time, a
+  // modes step's variables).
   static std::optional<OutputField> ofVariable(std::string_view variable);
   static std::string_view name(OutputField f) { return kNames[index(f)].first; }
   // "displacement, position, ..., wave_elevation", for messages.
@@ -80,6 +82,7 @@ inline std::optional<OutputField> OutputFields::ofVariable(std::string_view vari
   }};
   for (const auto& [prefix, field] : kPrefixes)
     if (variable.substr(0, prefix.size()) == prefix) return field;
+  if (variable == "speed") return OutputField::Velocity;
   if (variable == "wave_elevation") return OutputField::WaveElevation;
   return std::nullopt;
 }

@@ -36,8 +36,7 @@ std::optional<std::string> readSeries(CaseBuilder& b, const YAML::Node& item,
     return std::nullopt;
   }
   // A series is drawn from the netCDF file: its field must be written.
-  const OutputField field =
-      *OutputFields::ofVariable(*quantity == "speed" ? "velocity_x" : *quantity);
+  const OutputField field = *OutputFields::ofVariable(*quantity);
   if (!b.c.output.has(field)) {
     b.diag.error(*q, f.path("quantity") + ": " + *quantity + " is not written (output: fields: " +
                          "does not list " + std::string(OutputFields::name(field)) + ")");

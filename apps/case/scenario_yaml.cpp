@@ -51,7 +51,7 @@ YAML::Node defaultFigure(const Fields& top, const std::vector<YAML::Node>& serie
   const YAML::Node listed = output && output->IsMap() ? (*output)["fields"] : YAML::Node();
   const auto written = [&](const std::string& quantity) {
     if (!listed.IsSequence()) return true;
-    const auto field = OutputFields::ofVariable(quantity == "speed" ? "velocity_x" : quantity);
+    const auto field = OutputFields::ofVariable(quantity);
     for (const YAML::Node& name : listed)
       if (field && name.IsScalar() && name.Scalar() == OutputFields::name(*field)) return true;
     return false;

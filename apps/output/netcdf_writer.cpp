@@ -319,7 +319,7 @@ void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
       frame.state->velocity.cols() != node_count_ ||
       (fields_.has(OutputField::Reaction) && frame.reactions.cols() != node_count_))
     fail("its nodal fields do not have the model's " + std::to_string(node_count_) + " nodes");
-  if (!elementResults()) return;
+  if (!fields_.needsElementResults()) return;  // the frame need not carry them
   if (static_cast<int>(frame.elements.size()) != element_count_)
     fail("it has " + std::to_string(frame.elements.size()) + " element results for " +
          std::to_string(element_count_) + " elements");
@@ -433,7 +433,7 @@ void NetcdfWriter::gatherModes(const ResultFrame& frame) {
 void NetcdfWriter::write(const ResultFrame& frame) {
   requireMatches(frame);
   // The layout first: defining variables writes out what is held.
-  if (!layout_defined_ && elementResults()) definePoints(frame);
+  if (!layout_defined_ && fields_.needsElementResults()) definePoints(frame);
   if (!frame.frequencies.empty()) {
     if (dim_mode_ < 0) defineModes(frame.frequencies.size());
     if (frame.frequencies.size() != mode_count_)

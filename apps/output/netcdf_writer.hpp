@@ -90,11 +90,6 @@ class NetcdfWriter final : public ResultSink {
   void defineModes(size_t count);
   void gatherModes(const ResultFrame& frame);
   void requireMatches(const ResultFrame& frame) const;
-  // The records hold element results (tensions or membrane resultants): the frames must have
-  // them, in the layout of the first.
-  bool elementResults() const {
-    return fields_.has(OutputField::Tension) || fields_.has(OutputField::MembraneResultant);
-  }
   // field, or field + *plus (a position: reference + displacement), one record of v.
   void gatherNodal(const Vector3Variable& v, const model::NodalField& field,
                    const model::NodalField* plus = nullptr);
