@@ -334,9 +334,10 @@ void NetcdfWriter::gatherNodal(const Vector3Variable& v, const model::NodalField
                                const model::NodalField* plus) {
   if (v.id[0] < 0) return;  // not a field of the case's output
   const size_t nodes = node_count_;
-  // The fields are checked where they are (in cache), not in the record buffers just written
+  // The field is checked where it is (in cache), not in the record buffers just written
   // (reading those back cost as much as writing them); the buffers only when a value is not.
-  const bool finite = field.allFinite() && (!plus || plus->allFinite());
+  // `plus` is the reference, checked once by writeMesh.
+  const bool finite = field.allFinite();
   for (int k = 0; k < 3; ++k) {
     Eigen::Map<Eigen::RowVectorXd> values(file_.slot<double>(v.id[k], records_), nodes);
     if (plus)
