@@ -64,8 +64,9 @@ void MembraneElement<Shape>::internalForce(const ElementContext& c, Eigen::Vecto
                                            Eigen::MatrixXd* K) const {
   Coordinates X, Y;
   gather(c, X, Y);
-  f.setZero(3 * N);
-  if (K) K->setZero(3 * N, 3 * N);
+  NodalVector force = NodalVector::Zero();
+  Tangent tangent;  // fixed size: the products below are unrolled, not general GEMM calls
+  if (K) tangent.setZero();
   for (int q = 0; q < rule_.size(); ++q) {
     const typename Shape::Derivatives dM =
         Shape::derivatives(rule_.points[q].x(), rule_.points[q].y());
@@ -74,20 +75,23 @@ void MembraneElement<Shape>::internalForce(const ElementContext& c, Eigen::Vecto
     const material::MembraneStress s = section_.material->stress(a, A);
     const double dV = section_.thickness * std::sqrt(a.determinant()) * rule_.weights[q];
     // Eq. 3.17 / 4.29: F^I = int T^ab M^I,a y,b h0 sqrt(a)
-    for (int I = 0; I < N; ++I)
-      f.template segment<3>(3 * I) += dV * (y * (s.T * dM.row(I).transpose()));
+    const Eigen::Matrix<double, 3, N> yTdM = dV * (y * (s.T * dM.transpose()));
+    force += Eigen::Map<const NodalVector>(yTdM.data());
     if (!K) continue;
     // Eq. 4.39: geometric T^ab M^I,a M^J,b delta_ij + material B_I^T C B_J
-    Eigen::Matrix<double, 3, 3 * N> CB;
     Eigen::Matrix<double, 3, 3 * N> B;
     for (int I = 0; I < N; ++I) B.template middleCols<3>(3 * I) = strainRows(dM.row(I), y);
-    CB = s.C * B;
-    K->noalias() += dV * (B.transpose() * CB);
+    const Eigen::Matrix<double, 3, 3 * N> CB = dV * (s.C * B);
+    // B^T (C B) a column at a time: three axpys of 3N each (depth 3, no GEMM call)
+    const Eigen::Matrix<double, 3 * N, 3> Bt = B.transpose();
+    for (int j = 0; j < 3 * N; ++j) tangent.col(j).noalias() += Bt * CB.col(j);
     const Eigen::Matrix<double, N, N> G = dV * (dM * s.T * dM.transpose());
-    for (int I = 0; I < N; ++I)
-      for (int J = 0; J < N; ++J)
-        K->template block<3, 3>(3 * I, 3 * J).diagonal().array() += G(I, J);
+    for (int J = 0; J < N; ++J)
+      for (int I = 0; I < N; ++I)
+        tangent.template block<3, 3>(3 * I, 3 * J).diagonal().array() += G(I, J);
   }
+  f = force;
+  if (K) *K = tangent;
 }
 
 template <class Shape>
@@ -145,8 +149,10 @@ void MembraneElement<Shape>::followerPressure(const ElementContext& c,
     V.col(I) = c.state.velocity.col(nodes()[I]);
     A.col(I) = c.state.acceleration.col(nodes()[I]);
   }
-  f.setZero(3 * N);
-  if (dfdu) dfdu->setZero(3 * N, 3 * N);
+  Coordinates load = Coordinates::Zero();  // column I: P^I
+  // Row-major: the rows of node I are one contiguous block, updated by one axpy a point.
+  Eigen::Matrix<double, 3 * N, 3 * N, Eigen::RowMajor> tangent;
+  if (dfdu) tangent.setZero();
   for (int q = 0; q < rule_.size(); ++q) {
     const Eigen::Vector2d& pt = rule_.points[q];
     const typename Shape::Values Mv = Shape::values(pt.x(), pt.y());
@@ -157,17 +163,19 @@ void MembraneElement<Shape>::followerPressure(const ElementContext& c,
     const double w = p.pressure * rule_.weights[q];
     // Eq. 3.37: P^I = int p M^I (y,1 x y,2) dxi1 dxi2 (the cross product carries the area)
     const Vector3d n = y.col(0).cross(y.col(1));
-    for (int I = 0; I < N; ++I) f.template segment<3>(3 * I) += (w * Mv(I)) * n;
+    load.noalias() += (w * n) * Mv.transpose();
     if (!dfdu) continue;
     // d(y,1 x y,2)/du^J = M^J,1 (-[y,2]x) + M^J,2 [y,1]x, i.e. dn = dy,1 x y,2 + y,1 x dy,2;
-    // the gradient part: dp/du^J = M^J (dp/dy)^T
+    // the gradient part: dp/du^J = M^J (dp/dy)^T. Block (I, J) of dP/du is M^I dn_J.
     const Matrix3d S1 = skew(y.col(0)), S2 = skew(y.col(1));
     const Matrix3d n_grad = rule_.weights[q] * (n * p.d_position.transpose());
-    for (int J = 0; J < N; ++J) {
-      const Matrix3d dn = w * (-dM(J, 0) * S2 + dM(J, 1) * S1) + Mv(J) * n_grad;
-      for (int I = 0; I < N; ++I) dfdu->template block<3, 3>(3 * I, 3 * J) += Mv(I) * dn;
-    }
+    Eigen::Matrix<double, 3, 3 * N, Eigen::RowMajor> dn;
+    for (int J = 0; J < N; ++J)
+      dn.template middleCols<3>(3 * J) = w * (-dM(J, 0) * S2 + dM(J, 1) * S1) + Mv(J) * n_grad;
+    for (int I = 0; I < N; ++I) tangent.template middleRows<3>(3 * I) += Mv(I) * dn;
   }
+  f = Eigen::Map<const NodalVector>(load.data());
+  if (dfdu) *dfdu = tangent;
 }
 
 template <class Shape>

@@ -39,6 +39,8 @@ class MembraneElement final : public Element {
   static constexpr int N = Shape::Values::RowsAtCompileTime;
   using Coordinates = Eigen::Matrix<double, 3, N>;
   using AreaMatrix = Eigen::Matrix<double, N, N>;
+  using NodalVector = Eigen::Matrix<double, 3 * N, 1>;  // 3 I + i: component i at node I
+  using Tangent = Eigen::Matrix<double, 3 * N, 3 * N>;
   void gather(const ElementContext& c, Coordinates& X, Coordinates& Y) const;
   // int M^I M^J dA over the reference surface X (the mass matrix per unit rho h, Eq. 4.40).
   AreaMatrix areaMatrix(const Coordinates& X) const;

@@ -123,10 +123,14 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   const bool self_corrective = o_.flavour == NewtonFlavour::SelfCorrective;
   // The matrices that follow the iterations: the tangent in full Newton (and in the
   // self-corrective scheme, whose one solve uses the step's start, so the accepting evaluation's
-  // serves the next step), the motion loads' with load_matrices: iteration.
+  // serves the next step), the motion loads' with load_matrices: iteration. The self-corrective
+  // scheme's one evaluation after its solve is the one that accepts the step, known in advance,
+  // so it takes the motion loads' matrices as well: the next step's start needs exactly these,
+  // which would otherwise cost a sweep of their own.
   const bool tangent_iterates = o_.flavour == NewtonFlavour::Full || self_corrective;
   const bool loads_iterate =
-      motion_loads_ && o_.load_matrices == DynamicOptions::LoadMatrixUpdate::Iteration;
+      motion_loads_ &&
+      (self_corrective || o_.load_matrices == DynamicOptions::LoadMatrixUpdate::Iteration);
   // The first solve's matrices, at the step's start: the tangent when it is refreshed this step,
   // the motion loads' always (both update schedules renew them at a step's start).
   const bool refresh_each_step = tangent_iterates ||
