@@ -132,9 +132,11 @@ class Element {
       return load.evaluate(p, jacobians);
     };
     if (!J) return followerPressure(c, field, f, nullptr);
-    J->setZero(dofCount());
-    followerPressure(c, field, f, &J->stiffness);
+    followerPressure(c, field, f, &J->stiffness);  // sets the whole matrix
     J->stiffness *= J->summed ? -J->summed->stiffness : -1.0;
+    if (J->summed) return;
+    J->damping.setZero(dofCount(), dofCount());
+    J->mass.setZero(dofCount(), dofCount());
   }
   // The result at the state into `out`, whose storage is reused: a record of a long run
   // allocates nothing.

@@ -40,7 +40,10 @@ Matrix3d skew(const Vector3d& v) {
 template <class Shape>
 MembraneElement<Shape>::MembraneElement(std::vector<int> nodes, MembraneSection section,
                                         const shape::QuadratureRule2D& rule)
-    : Element(std::move(nodes)), section_(std::move(section)), rule_(rule) {
+    : Element(std::move(nodes)),
+      section_(std::move(section)),
+      rule_(rule),
+      shapes_(shape::ShapeTable<Shape>::of(rule)) {
   if (static_cast<int>(this->nodes().size()) != N)
     throw std::invalid_argument("membrane element node count does not match its shape");
 }
@@ -68,8 +71,7 @@ void MembraneElement<Shape>::internalForce(const ElementContext& c, Eigen::Vecto
   Tangent tangent;  // fixed size: the products below are unrolled, not general GEMM calls
   if (K) tangent.setZero();
   for (int q = 0; q < rule_.size(); ++q) {
-    const typename Shape::Derivatives dM =
-        Shape::derivatives(rule_.points[q].x(), rule_.points[q].y());
+    const typename Shape::Derivatives& dM = shapes_->derivatives[q];
     const Eigen::Matrix<double, 3, 2> x = X * dM, y = Y * dM;  // x,a and y,a
     const Matrix2d a = x.transpose() * x, A = y.transpose() * y;
     const material::MembraneStress s = section_.material->stress(a, A);
@@ -99,9 +101,8 @@ typename MembraneElement<Shape>::AreaMatrix MembraneElement<Shape>::areaMatrix(
     const Coordinates& X) const {
   Eigen::Matrix<double, N, N> m = Eigen::Matrix<double, N, N>::Zero();
   for (int q = 0; q < rule_.size(); ++q) {
-    const Eigen::Vector2d& p = rule_.points[q];
-    const typename Shape::Values Mv = Shape::values(p.x(), p.y());
-    const Eigen::Matrix<double, 3, 2> x = X * Shape::derivatives(p.x(), p.y());
+    const typename Shape::Values& Mv = shapes_->values[q];
+    const Eigen::Matrix<double, 3, 2> x = X * shapes_->derivatives[q];
     const double dA = std::sqrt((x.transpose() * x).determinant()) * rule_.weights[q];
     m += dA * (Mv * Mv.transpose());
   }
@@ -130,9 +131,8 @@ void MembraneElement<Shape>::bodyLoad(const ElementContext& c, const Vector3d& g
   gather(c, X, Y);
   p.setZero(3 * N);
   for (int q = 0; q < rule_.size(); ++q) {
-    const Eigen::Vector2d& pt = rule_.points[q];
-    const typename Shape::Values Mv = Shape::values(pt.x(), pt.y());
-    const Eigen::Matrix<double, 3, 2> x = X * Shape::derivatives(pt.x(), pt.y());
+    const typename Shape::Values& Mv = shapes_->values[q];
+    const Eigen::Matrix<double, 3, 2> x = X * shapes_->derivatives[q];
     const double dA = std::sqrt((x.transpose() * x).determinant()) * rule_.weights[q];
     for (int I = 0; I < N; ++I)
       p.template segment<3>(3 * I) += (section_.density * section_.thickness * Mv(I) * dA) * g;
@@ -154,9 +154,8 @@ void MembraneElement<Shape>::followerPressure(const ElementContext& c,
   Eigen::Matrix<double, 3 * N, 3 * N, Eigen::RowMajor> tangent;
   if (dfdu) tangent.setZero();
   for (int q = 0; q < rule_.size(); ++q) {
-    const Eigen::Vector2d& pt = rule_.points[q];
-    const typename Shape::Values Mv = Shape::values(pt.x(), pt.y());
-    const typename Shape::Derivatives dM = Shape::derivatives(pt.x(), pt.y());
+    const typename Shape::Values& Mv = shapes_->values[q];
+    const typename Shape::Derivatives& dM = shapes_->derivatives[q];
     const Eigen::Matrix<double, 3, 2> y = Y * dM;
     model::LoadPoint point = interpolatedPoint(c, Y, V, A, Mv);
     const model::PointPressure p = pressure(point, dfdu != nullptr);
@@ -184,8 +183,7 @@ void MembraneElement<Shape>::result(const ElementContext& c, ElementResult& out)
   gather(c, X, Y);
   out.clear();
   for (int q = 0; q < rule_.size(); ++q) {
-    const typename Shape::Derivatives dM =
-        Shape::derivatives(rule_.points[q].x(), rule_.points[q].y());
+    const typename Shape::Derivatives& dM = shapes_->derivatives[q];
     const Eigen::Matrix<double, 3, 2> x = X * dM, y = Y * dM;
     const Matrix2d a = x.transpose() * x, A = y.transpose() * y;
     const material::MembraneStress s = section_.material->stress(a, A);

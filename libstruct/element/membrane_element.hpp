@@ -6,6 +6,7 @@
 
 #include "libstruct/element/element.hpp"
 #include "libstruct/material/membrane_material.hpp"
+#include "libstruct/shape/shape_table.hpp"
 #include "libstruct/shape/triangle_quadrature.hpp"
 
 namespace flexmoor::element {
@@ -47,6 +48,7 @@ class MembraneElement final : public Element {
 
   MembraneSection section_;
   const shape::QuadratureRule2D& rule_;
+  std::shared_ptr<const shape::ShapeTable<Shape>> shapes_;  // at rule_'s points
 };
 
 // Builds the membrane element for `shape` ("quad" or "triangle") and its node count; quadrature
