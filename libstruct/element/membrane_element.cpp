@@ -84,16 +84,20 @@ void MembraneElement<Shape>::internalForce(const ElementContext& c, Eigen::Vecto
     Eigen::Matrix<double, 3, 3 * N> B;
     for (int I = 0; I < N; ++I) B.template middleCols<3>(3 * I) = strainRows(dM.row(I), y);
     const Eigen::Matrix<double, 3, 3 * N> CB = dV * (s.C * B);
-    // B^T (C B) a column at a time: three axpys of 3N each (depth 3, no GEMM call)
+    // The upper triangle of B^T (C B), a column at a time (depth 3, no GEMM call); the tangent
+    // is symmetric, its lower triangle is copied once at the end.
     const Eigen::Matrix<double, 3 * N, 3> Bt = B.transpose();
-    for (int j = 0; j < 3 * N; ++j) tangent.col(j).noalias() += Bt * CB.col(j);
+    for (int j = 0; j < 3 * N; ++j)
+      tangent.col(j).head(j + 1).noalias() += Bt.topRows(j + 1) * CB.col(j);
     const Eigen::Matrix<double, N, N> G = dV * (dM * s.T * dM.transpose());
     for (int J = 0; J < N; ++J)
-      for (int I = 0; I < N; ++I)
+      for (int I = 0; I <= J; ++I)
         tangent.template block<3, 3>(3 * I, 3 * J).diagonal().array() += G(I, J);
   }
   f = force;
-  if (K) *K = tangent;
+  if (!K) return;
+  tangent.template triangularView<Eigen::StrictlyLower>() = tangent.transpose();
+  *K = tangent;
 }
 
 template <class Shape>

@@ -34,6 +34,8 @@ class Assembler {
   const SparseMatrix& pattern() const { return pattern_; }
 
   // Internal force F(u) as a full vector; with K, also the tangent on the free dofs (Eq. 4.48).
+  // Without K at the displacement of the last evaluation, that evaluation's force (F depends on
+  // u alone).
   void internalForce(const State& state, Eigen::VectorXd& force, SparseMatrix* K) const;
   // External load P at the state's load factor: nodal loads, gravity, line, surface and node
   // loads, follower pressures. With J, also the motion-dependent loads' matrices at the state,
