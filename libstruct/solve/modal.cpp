@@ -103,7 +103,12 @@ ModalResult naturalModes(const model::Assembler& assembler, const model::State& 
 
   ModalResult result;
   for (int k = 0; k < modes; ++k) {
-    const Eigen::VectorXd phi = vectors.col(k) / std::sqrt(vectors.col(k).dot(M * vectors.col(k)));
+    Eigen::VectorXd phi = vectors.col(k) / std::sqrt(vectors.col(k).dot(M * vectors.col(k)));
+    // An eigenvector's sign is arbitrary, and round-off flips it from one build to another: the
+    // shape is given with its largest component positive, so runs compare.
+    Eigen::Index largest = 0;
+    phi.cwiseAbs().maxCoeff(&largest);
+    if (phi(largest) < 0.0) phi = -phi;
     result.omega.push_back(std::sqrt(std::max(0.0, eigenvalues(k))));
     model::NodalField shape = model::NodalField::Zero(3, state.displacement.cols());
     assembler.addFree(phi, shape);

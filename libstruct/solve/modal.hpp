@@ -22,7 +22,8 @@ struct ModalOptions {
 
 struct ModalResult {
   std::vector<double> omega;              // rad/s, ascending
-  std::vector<model::NodalField> shapes;  // mass-normalised mode shapes, 3 x nodes each
+  std::vector<model::NodalField> shapes;  // mass-normalised mode shapes, 3 x nodes each, each
+                                          // with its largest component positive
 };
 
 // Throws std::runtime_error when it cannot: a free dof without mass (named with the log's node
