@@ -1,8 +1,8 @@
 // The in-plane principal resultants (apps/output/membrane_resultants.cpp): a tensor
 // R diag(a, b, 0) R^T in a plane of any orientation R, with known a and b, against a and b, on
 // both of its paths (the plane's own 2 x 2 problem, and the eigensolver for a nearly uniaxial
-// tensor). Tolerance 1e-13 of the larger
-// magnitude (the tensor itself carries round-off of ~1e-16 of it from the rotation).
+// tensor). Tolerance 1e-13 of the larger magnitude (the tensor itself carries round-off of
+// ~1e-16 of it from the rotation).
 #include "apps/output/membrane_resultants.hpp"
 
 #include <gtest/gtest.h>
