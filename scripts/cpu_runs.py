@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""CPU time (user + system) of commands run in turn: N CMD_A [-- CMD_B ...].
+"""CPU time (user + system) and wall-clock time of commands run in turn: N CMD_A [-- CMD_B ...].
 
 Each command runs N times, interleaved with the others (A B A B ...), so a drift of the
 machine's speed reaches all of them alike; the time of each run is its own rusage (os.wait4),
-not the wall clock. Prints the minimum and the median of each, in ms:
+and its wall clock from start to exit. Prints the minimum and the median of each, in ms:
 
     /usr/bin/python3 scripts/cpu_runs.py 15 ./flexmoor.base run CASE -o a --no-vtk --no-figure \\
         -- build/bin/flexmoor run CASE -o b --no-vtk --no-figure
@@ -12,19 +12,24 @@ import os
 import statistics
 import subprocess
 import sys
+import time
 
 if len(sys.argv) < 3:
     sys.exit(__doc__)
 runs = int(sys.argv[1])
 commands = [c.split() for c in " ".join(sys.argv[2:]).split(" -- ")]
 times = [[] for _ in commands]
+walls = [[] for _ in commands]
 for _ in range(runs):
-    for command, spent in zip(commands, times):
+    for command, spent, wall in zip(commands, times, walls):
+        start = time.perf_counter()
         child = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         _, status, usage = os.wait4(child.pid, 0)
+        wall.append(1000.0 * (time.perf_counter() - start))
         if status != 0:
             sys.exit(f"{' '.join(command)}: exit status {status}")
         spent.append(1000.0 * (usage.ru_utime + usage.ru_stime))
-for command, spent in zip(commands, times):
-    print(f"{' '.join(command)[:60]:60s} min {min(spent):8.1f} ms  "
-          f"median {statistics.median(spent):8.1f} ms  ({runs} runs)")
+for command, spent, wall in zip(commands, times, walls):
+    print(f"{' '.join(command)[:60]:60s} cpu min {min(spent):7.1f} median "
+          f"{statistics.median(spent):7.1f} ms   wall min {min(wall):7.1f} median "
+          f"{statistics.median(wall):7.1f} ms  ({runs} runs)")

@@ -152,7 +152,7 @@ int main(int argc, char** argv) {
 
   std::string case_name;
   RunOptions options;  // output_dir is set only by -o (runCase chooses the default)
-  bool no_vtk = false, no_figure = false;
+  bool no_vtk = false, no_figure = false, no_writer_thread = false;
   CLI::App* run_command = app.add_subcommand("run", cli::kRunSummary);
   run_command->footer(cli::kRunDetails);
   run_command->add_option("CASE", case_name, "a case file, or the name of a case under cases/")
@@ -162,6 +162,9 @@ int main(int argc, char** argv) {
       ->type_name("DIR");
   run_command->add_flag("--no-vtk", no_vtk, "do not write the .vtk files");
   run_command->add_flag("--no-figure", no_figure, "do not draw the case's figure (DIR/<case>.png)");
+  run_command->add_flag("--no-writer-thread", no_writer_thread,
+                        "write the netCDF records in the run's own thread (by default a second "
+                        "thread writes them while the run goes on)");
 
   CLI::App* check_command = app.add_subcommand("check", cli::kCheckSummary);
   check_command->footer(cli::kCheckDetails);
@@ -231,6 +234,7 @@ int main(int argc, char** argv) {
   }
   options.vtk = !no_vtk;
   options.figure = !no_figure;
+  options.background_writer = !no_writer_thread;
   if (check_command->parsed()) return check(case_name);
   if (cases_command->parsed()) return listNamedCases();
   if (study_command->parsed()) return study(study_file, study_options);

@@ -25,6 +25,7 @@ NetcdfFile::NetcdfFile(std::string path, std::chrono::steady_clock::duration flu
   turnOffHdf5ExitCleanup();
   removeEntry(path_);
   check(nc_create(path_.c_str(), NC_NETCDF4 | NC_NOCLOBBER, &id_), "cannot create the file");
+  writeback_.emplace(path_);
 }
 
 NetcdfFile::~NetcdfFile() {
@@ -224,6 +225,7 @@ void NetcdfFile::drain(int variable, RecordBuffer& buffer) {
     throw std::logic_error(path_ + ": " + variableName(variable) +
                            " written out while a record of it is being filled");
   write(variable, buffer.start(), buffer.count(), buffer.values(), buffer.type());
+  writeback_->written(buffer.bytes());
   buffer.clear();
 }
 

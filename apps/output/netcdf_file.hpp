@@ -15,6 +15,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "apps/output/disk_writeback.hpp"
 #include "apps/output/record_buffer.hpp"
 
 namespace flexmoor::app {
@@ -90,6 +91,8 @@ class NetcdfFile {
   void flush();
   // How many times the file was flushed so far.
   int flushes() const { return flushes_; }
+  // How many times the kernel was asked to start writing the file to disk (disk_writeback.hpp).
+  int writebacks() const { return writeback_ ? writeback_->started() : 0; }
 
  private:
   [[noreturn]] void fail(int status, const std::string& what) const;
@@ -117,6 +120,7 @@ class NetcdfFile {
   RecordBuffer* recordBuffer(int variable);
   std::vector<std::optional<RecordBuffer>> buffers_;  // by variable id: of every record variable
   std::vector<int> pending_;  // variables whose slot was taken since the last commit or drop
+  std::optional<DiskWriteback> writeback_;  // told of every buffer of records written
 };
 
 }  // namespace flexmoor::app

@@ -56,6 +56,7 @@ class RecordBuffer {
   std::vector<size_t> start() const;
   std::vector<size_t> count() const;
   const void* values() const { return bytes_.data(); }
+  size_t bytes() const { return records_ * record_values_ * valueBytes(type_); }
   nc_type type() const { return type_; }
   void clear() { records_ = 0; }
 

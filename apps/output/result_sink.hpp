@@ -10,6 +10,10 @@ class ResultSink {
   virtual ~ResultSink() = default;
   // One record; `frame.state` is valid during the call only.
   virtual void write(const ResultFrame& frame) = 0;
+  // The same record from a caller that fills `frame` anew for the next one: the sink may keep
+  // its element results and reactions and leave in their place those of an earlier record
+  // (storage of the same shape to fill, without allocating), instead of copying them.
+  virtual void take(ResultFrame& frame) { write(frame); }
   // At the end of every step and of the run: whatever the sink buffers is made to last.
   virtual void flush() {}
   // Whether the frames written must carry element results and reactions (an assembly sweep per

@@ -2,10 +2,12 @@
 
 #include <filesystem>
 #include <iomanip>
+#include <optional>
 #include <ostream>
 #include <set>
 
 #include "apps/output/atomic_output.hpp"
+#include "apps/output/background_sink.hpp"
 #include "apps/output/netcdf_writer.hpp"
 #include "apps/output/output_lock.hpp"
 #include "apps/output/summary_json.hpp"
@@ -68,8 +70,10 @@ RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
       SimulationResult result;
       {  // the file is closed before it is put in place
         NetcdfWriter netcdf(files.partialNetcdf(), *c.model, c);
+        std::optional<BackgroundSink> background;  // joined before the file closes
+        if (options.background_writer) background.emplace(netcdf);
         Simulation simulation(c, log, diag);
-        simulation.addSink(netcdf);
+        simulation.addSink(background ? static_cast<ResultSink&>(*background) : netcdf);
         for (StateObserver* o : options.observers) simulation.addObserver(*o);
         result = simulation.run();
       }

@@ -34,6 +34,12 @@ void Simulation::write(const ResultFrame& f) {
   for (ResultSink* sink : sinks_) sink->write(f);
 }
 
+void Simulation::take(ResultFrame& f) {
+  if (sinks_.empty()) return;
+  for (size_t k = 0; k + 1 < sinks_.size(); ++k) sinks_[k]->write(f);
+  sinks_.back()->take(f);
+}
+
 void Simulation::flush() {
   for (ResultSink* sink : sinks_) sink->flush();
 }
@@ -60,7 +66,12 @@ void Simulation::fill(int i, std::string name, const model::State& s, ResultFram
   f.step_index = i;
   f.step_name = std::move(name);
   f.state = &s;
-  if (results) assembler_->results(s, f.elements, f.reactions);
+  if (results) {
+    assembler_->results(s, f.elements, f.reactions);
+  } else {  // what a sink left in a reused frame (ResultSink::take) is not this state's
+    f.elements.clear();
+    f.reactions.resize(3, 0);
+  }
 }
 
 // Runs step i from `state`; returns its closing frame. Throws ConvergenceError with `state` at
@@ -124,7 +135,7 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
     const bool last = s.time >= end - 1e-9 * std::max(1.0, duration);
     if (accepted % step.output_every == 0 || last) {
       fill(i, step.name, s, streamed, results);
-      write(streamed);
+      take(streamed);
     }
     if (s.time >= next_report - 1e-12 || last) {
       log_ << "  t = " << std::setprecision(6) << s.time << " s (" << std::setprecision(3)

@@ -62,6 +62,9 @@ class Simulation {
   ResultFrame dynamic(int i, model::State& state);
   void release(const StepSpec& step);
   void write(const ResultFrame& f);
+  // write() of a frame that is filled anew for the next record: the last sink may take its
+  // contents (ResultSink::take).
+  void take(ResultFrame& f);
   void flush();
   std::vector<std::pair<std::string, double>> evaluate(
       const std::vector<ResultFrame>& frames,

@@ -19,6 +19,7 @@ int runMember(const Study& study, const StudyMember& member, const std::string& 
     options.output_dir = memberDirectory(dir, member.index);
     options.vtk = false;
     options.figure = false;
+    options.background_writer = false;  // the members fill the cores
     options.observers.push_back(&recorder);
     const RunOutcome outcome = runCase(m.c, options, std::cout, std::cerr);
     if (outcome.exit_code != kSuccess) return outcome.exit_code;

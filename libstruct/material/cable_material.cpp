@@ -13,7 +13,8 @@ CableStress CableMaterial::stress(double a11, double A11) const {
 
 double CableMaterial::tension(double a11, double A11, double A0) const {
   const double stretch = std::sqrt(A11 / a11);
-  return stress(a11, A11).T11 * a11 * stretch * A0;
+  if (compression_ == Compression::TensionOnly && stretch < 1.0) return 0.0;
+  return law(stretch).S * stretch * A0;  // T11 a11 = S
 }
 
 LinearElasticCable::LinearElasticCable(double youngs_modulus, Compression compression)

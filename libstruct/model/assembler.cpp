@@ -357,38 +357,50 @@ void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scrat
   checkMemos(state, scratch);
   if (!scratch.internal_memo) element.internalForce(context(state, e), scratch.force, nullptr);
   const Eigen::VectorXd& f = scratch.internal_memo ? internal_memo_.elements[e] : scratch.force;
-  // A memo without per-element loads: the structure has none (no gravity, no line loads).
-  const bool loaded = !scratch.external_memo || external_memo_.per_element;
-  if (!scratch.external_memo) elementLoad(state, e, scratch.load);
-  const Eigen::VectorXd* p = !loaded                 ? nullptr
-                             : scratch.external_memo ? &external_memo_.elements[e]
-                                                     : &scratch.load;
-  const bool damped = element.hasDamping();
-  if (damped) element.dampingForce(context(state, e), scratch.damping, nullptr);
-  const auto& index = full_index_[e];
-  Eigen::VectorXd& a = scratch.acceleration;
-  a.resize(index.size());
-  for (size_t k = 0; k < index.size(); ++k) a(k) = state.acceleration.data()[index[k]];
-  const bool accelerating = !a.isZero(0.0);
-  if (accelerating && consistent_masses_.empty())
-    consistent_masses_ = elementMasses(element::MassKind::Consistent);
   const std::vector<int>& nodes = element.nodes();
   const int last = static_cast<int>(nodes.size()) - 1;
+  // The forces on the two end nodes, [first; last].
+  Eigen::Matrix<double, 6, 1> force;
+  force << f.segment<3>(0), f.segment<3>(3 * last);
+  // A memo without per-element loads: the structure has none (no gravity, no line loads).
+  if (!scratch.external_memo || external_memo_.per_element) {
+    if (!scratch.external_memo) elementLoad(state, e, scratch.load);
+    const Eigen::VectorXd& p = scratch.external_memo ? external_memo_.elements[e] : scratch.load;
+    force.head<3>() -= p.segment<3>(0);
+    force.tail<3>() -= p.segment<3>(3 * last);
+  }
+  if (element.hasDamping()) {
+    element.dampingForce(context(state, e), scratch.damping, nullptr);
+    force.head<3>() += scratch.damping.segment<3>(0);
+    force.tail<3>() += scratch.damping.segment<3>(3 * last);
+  }
+  if (scratch.accelerating) {  // the end rows of M_e times u''_e, column by column
+    if (end_masses_.empty()) endMasses();
+    const Eigen::Matrix<double, 6, Eigen::Dynamic>& rows = end_masses_[e];
+    const auto& index = full_index_[e];
+    for (size_t j = 0; j < index.size(); ++j)
+      force += rows.col(static_cast<Eigen::Index>(j)) * state.acceleration.data()[index[j]];
+  }
   const auto position = [&](int local) -> Eigen::Vector3d {
     return model_.reference().col(nodes[local]) + state.displacement.col(nodes[local]);
   };
   for (const int end : {0, 1}) {
     const int local = end == 0 ? 0 : last;
     const int next = end == 0 ? 1 : last - 1;
-    Eigen::Vector3d force = f.segment<3>(3 * local);
-    if (loaded) force -= p->segment<3>(3 * local);
-    if (damped) force += scratch.damping.segment<3>(3 * local);
-    if (accelerating) {  // M_e a at the end node, column by column (no general GEMV call)
-      const Eigen::MatrixXd& M = consistent_masses_[e];
-      for (Eigen::Index j = 0; j < a.size(); ++j) force += M.block<3, 1>(3 * local, j) * a(j);
-    }
-    const double magnitude = force.norm();
-    r.end_tension[end] = force.dot(position(next) - position(local)) > 0.0 ? -magnitude : magnitude;
+    const Eigen::Vector3d on_end = force.segment<3>(3 * end);
+    const double magnitude = on_end.norm();
+    r.end_tension[end] = on_end.dot(position(next) - position(local)) > 0.0 ? -magnitude : magnitude;
+  }
+}
+
+void Assembler::endMasses() const {
+  const std::vector<Eigen::MatrixXd> masses = elementMasses(element::MassKind::Consistent);
+  end_masses_.resize(masses.size());
+  for (size_t e = 0; e < masses.size(); ++e) {
+    const Eigen::Index n = masses[e].rows(), last = n - 3;
+    end_masses_[e].resize(6, n);
+    if (n < 6) continue;  // not a line of two ends: never asked
+    end_masses_[e] << masses[e].middleRows<3>(0), masses[e].middleRows<3>(last);
   }
 }
 
@@ -433,6 +445,7 @@ void Assembler::checkMemos(const State& state, EndForceScratch& scratch) const {
   if (scratch.checked) return;
   scratch.internal_memo = sameDisplacement(internal_memo_, state);
   scratch.external_memo = sameState(external_memo_, state);
+  scratch.accelerating = !state.acceleration.isZero(0.0);
   scratch.checked = true;
 }
 

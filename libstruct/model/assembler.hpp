@@ -119,8 +119,8 @@ class Assembler {
   // Work space of one sweep over the elements at one state, and whether the memos below hold
   // that state's forces (asked once a sweep).
   struct EndForceScratch {
-    Eigen::VectorXd force, load, acceleration, damping;
-    bool checked = false, internal_memo = false, external_memo = false;
+    Eigen::VectorXd force, load, damping;
+    bool checked = false, internal_memo = false, external_memo = false, accelerating = false;
   };
   void checkMemos(const State& state, EndForceScratch& scratch) const;
   void reactions(const State& state, EndForceScratch& scratch, NodalField& r) const;
@@ -150,9 +150,11 @@ class Assembler {
   std::vector<std::vector<int>> slot_;        // per element: value slot of each (a, b), or -1
   std::vector<std::vector<int>> node_slot_;   // per node load: slot of each (a, b) of its node
   std::vector<int> damped_;                   // the elements with internal damping
-  // Consistent element masses for the end-force balance, computed on first use (total
-  // Lagrangian: they depend on the reference configuration only).
-  mutable std::vector<Eigen::MatrixXd> consistent_masses_;
+  // The rows of the end nodes (first, last) of every consistent element mass, for the end-force
+  // balance: computed on first use (total Lagrangian: they depend on the reference configuration
+  // only).
+  mutable std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic>> end_masses_;
+  void endMasses() const;
   mutable EndForceScratch results_scratch_;  // elementResults' work space, kept between calls
   mutable element::LoadMatrices element_jacobians_;  // one element's load matrices, reused
   mutable Eigen::VectorXd element_load_;             // one element's share of a load, reused

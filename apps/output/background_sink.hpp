@@ -1,0 +1,86 @@
+#pragma once
+// A sink that passes every record to another sink on a thread of its own, so that the run goes
+// on while the records are gathered, handed to HDF5 and copied by the kernel into the page
+// cache: on a machine with a free core, writing every step of a small model costs the run's
+// thread little more than handing each frame over (docs/performance.md, "Output cost,
+// session 16").
+//
+// The frames wait in a ring (at most kRingBytes of them, at least two). The run's thread fills a
+// free frame and publishes it with one atomic store; the writing thread takes every published
+// frame when it wakes: when half of the ring waits, when the ring is full, on a flush, and by
+// itself every kWakeInterval. So there is no lock and no wake-up per record (a wake-up costs the
+// waking thread microseconds on a virtual machine), and a record reaches the sink (and, at the
+// sink's own flush interval, the disk) within kWakeInterval however slowly records come. write()
+// blocks only while the ring is full. Every call on the sink is made from the writing thread, one
+// at a time: a sink that is not thread-safe (netCDF, HDF5) may be wrapped as it is.
+//
+// An exception of the sink's write or flush stops the writing: the frames after it are dropped
+// and every later write() or flush() of this sink throws it, in the run's thread. flush() returns
+// once every frame given so far is written and the sink flushed. The destructor writes what is
+// still waiting (a run that fails for another reason keeps its records) and joins the thread.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "apps/output/result_frame.hpp"
+#include "apps/output/result_sink.hpp"
+
+namespace flexmoor::app {
+
+class BackgroundSink final : public ResultSink {
+ public:
+  static constexpr size_t kRingBytes = 8u << 20;
+  static constexpr size_t kMaxFrames = 4096;
+  static constexpr std::chrono::milliseconds kWakeInterval{100};
+
+  explicit BackgroundSink(ResultSink& sink);
+  ~BackgroundSink() override;
+  BackgroundSink(const BackgroundSink&) = delete;
+  BackgroundSink& operator=(const BackgroundSink&) = delete;
+
+  void write(const ResultFrame& frame) override;
+  // Swaps the frame's element results and reactions with those of the ring's free frame.
+  void take(ResultFrame& frame) override;
+  void flush() override;
+  bool needsResults() const override { return needs_results_; }
+
+ private:
+  struct Held {
+    model::State state;
+    ResultFrame frame;  // frame.state points to `state`
+  };
+  void work();
+  // Writes the published frames not yet written; false once the sink has failed.
+  bool writePublished();
+  // Sizes the ring for frames like `frame` (the first one).
+  void allocate(const ResultFrame& frame);
+  // The ring's next free frame, once there is one, with frame's state and labels copied into it
+  // (write and take add the rest).
+  Held& next(const ResultFrame& frame);
+  // Publishes the frame next() gave, filled.
+  void publish();
+  void wakeWriter();
+  // Throws the sink's exception, if it threw one.
+  void rethrowError();
+
+  ResultSink& sink_;
+  const bool needs_results_;
+  std::vector<Held> ring_;  // sized by the first frame, before any is published
+  // Frames published and frames written since the start (frame n is ring_[n % size]): the run's
+  // thread alone stores published_, the writing thread alone written_.
+  std::atomic<size_t> published_{0}, written_{0};
+  std::atomic<bool> failed_{false}, writer_asleep_{false};
+  // Under the lock.
+  bool flush_asked_ = false, flushed_ = false, stop_ = false;
+  std::exception_ptr error_;
+  std::mutex mutex_;
+  std::condition_variable work_, done_;
+  std::thread thread_;
+};
+
+}  // namespace flexmoor::app
