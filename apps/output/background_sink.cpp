@@ -1,6 +1,7 @@
 #include "apps/output/background_sink.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace flexmoor::app {
 
@@ -54,6 +55,7 @@ BackgroundSink::Held& BackgroundSink::next(const ResultFrame& frame) {
   held.frame.step_name = frame.step_name;
   held.frame.frequencies = frame.frequencies;
   held.frame.mode_shapes = frame.mode_shapes;
+  held.frame.pending = frame.pending;
   return held;
 }
 
@@ -69,6 +71,7 @@ void BackgroundSink::write(const ResultFrame& frame) {
   Held& held = next(frame);
   held.frame.elements = frame.elements;
   held.frame.reactions = frame.reactions;
+  held.frame.inputs = frame.inputs;
   publish();
 }
 
@@ -76,6 +79,7 @@ void BackgroundSink::take(ResultFrame& frame) {
   Held& held = next(frame);
   held.frame.elements.swap(frame.elements);
   held.frame.reactions.swap(frame.reactions);
+  std::swap(held.frame.inputs, frame.inputs);
   publish();
 }
 
@@ -95,7 +99,11 @@ bool BackgroundSink::writePublished() {
   const size_t published = published_.load(std::memory_order_acquire);
   size_t n = written_.load(std::memory_order_relaxed);
   try {
-    for (; n < published; ++n) sink_.write(ring_[n % ring_.size()].frame);
+    for (; n < published; ++n) {
+      ResultFrame& frame = ring_[n % ring_.size()].frame;
+      completeResults(frame);
+      sink_.write(frame);
+    }
     written_.store(n, std::memory_order_release);
     return true;
   } catch (...) {

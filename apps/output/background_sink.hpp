@@ -1,9 +1,10 @@
 #pragma once
 // A sink that passes every record to another sink on a thread of its own, so that the run goes
 // on while the records are gathered, handed to HDF5 and copied by the kernel into the page
-// cache: on a machine with a free core, writing every step of a small model costs the run's
-// thread little more than handing each frame over (docs/performance.md, "Output cost,
-// session 16").
+// cache, and while the element results and reactions of each record are computed from the
+// inputs the run's thread took (ResultFrame::pending): on a machine with a free core, writing
+// every step of a small model costs the run's thread little more than handing each frame over
+// (docs/performance.md, "Output cost, session 16").
 //
 // The frames wait in a ring (at most kRingBytes of them, at least two). The run's thread fills a
 // free frame and publishes it with one atomic store; the writing thread takes every published
@@ -35,7 +36,7 @@ namespace flexmoor::app {
 class BackgroundSink final : public ResultSink {
  public:
   static constexpr size_t kRingBytes = 8u << 20;
-  static constexpr size_t kMaxFrames = 4096;
+  static constexpr size_t kMaxFrames = 1024;
   static constexpr std::chrono::milliseconds kWakeInterval{100};
 
   explicit BackgroundSink(ResultSink& sink);
@@ -44,10 +45,13 @@ class BackgroundSink final : public ResultSink {
   BackgroundSink& operator=(const BackgroundSink&) = delete;
 
   void write(const ResultFrame& frame) override;
-  // Swaps the frame's element results and reactions with those of the ring's free frame.
+  // Swaps the frame's element results, reactions and result inputs with those of the ring's free
+  // frame.
   void take(ResultFrame& frame) override;
   void flush() override;
   bool needsResults() const override { return needs_results_; }
+  // Pending results are computed on the writing thread, just before the frame is written.
+  bool completesResults() const override { return true; }
 
  private:
   struct Held {

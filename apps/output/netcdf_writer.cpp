@@ -313,6 +313,7 @@ void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
     throw std::runtime_error(path() + ": cannot write step \"" + frame.step_name + "\": " + what);
   };
   if (!frame.state) fail("the frame has no state");
+  if (frame.pending) fail("its element results are still to be computed (completeResults)");
   if (frame.step_name.size() > name_length_)
     fail("the step name is longer than name_strlen (" + std::to_string(name_length_) + ")");
   if (frame.state->displacement.cols() != node_count_ ||

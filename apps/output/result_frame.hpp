@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "libstruct/element/element.hpp"
+#include "libstruct/model/assembler.hpp"
 #include "libstruct/model/state.hpp"
 
 namespace flexmoor::app {
@@ -23,6 +24,18 @@ struct ResultFrame {
   // A modes step: natural circular frequencies (rad/s, ascending) and mass-normalised shapes.
   std::vector<double> frequencies;
   std::vector<model::NodalField> mode_shapes;
+  // A streamed record handed to a sink that completes results itself
+  // (ResultSink::completesResults): its element results and reactions are still to be computed
+  // by this assembler from these inputs (completeResults), on the sink's own thread.
+  const model::Assembler* pending = nullptr;
+  model::ResultInputs inputs;
 };
+
+// Computes the element results and reactions of a frame whose results are pending.
+inline void completeResults(ResultFrame& frame) {
+  if (!frame.pending) return;
+  frame.pending->results(*frame.state, frame.inputs, frame.elements, frame.reactions);
+  frame.pending = nullptr;
+}
 
 }  // namespace flexmoor::app

@@ -19,6 +19,9 @@ class ResultSink {
   // Whether the frames written must carry element results and reactions (an assembly sweep per
   // record); a streamed record skips them when no sink does.
   virtual bool needsResults() const { return true; }
+  // Whether the sink takes frames whose results are pending (ResultFrame::pending) and completes
+  // them itself (completeResults), so that the run's thread need not compute them.
+  virtual bool completesResults() const { return false; }
 };
 
 }  // namespace flexmoor::app

@@ -70,9 +70,11 @@ RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
       SimulationResult result;
       {  // the file is closed before it is put in place
         NetcdfWriter netcdf(files.partialNetcdf(), *c.model, c);
-        std::optional<BackgroundSink> background;  // joined before the file closes
-        if (options.background_writer) background.emplace(netcdf);
         Simulation simulation(c, log, diag);
+        // Destroyed first: it writes what is still waiting (with the simulation's assembler,
+        // which completes pending results) before the file closes.
+        std::optional<BackgroundSink> background;
+        if (options.background_writer) background.emplace(netcdf);
         simulation.addSink(background ? static_cast<ResultSink&>(*background) : netcdf);
         for (StateObserver* o : options.observers) simulation.addObserver(*o);
         result = simulation.run();

@@ -62,15 +62,22 @@ ResultFrame Simulation::frame(int i, std::string name, const model::State& s) co
 }
 
 void Simulation::fill(int i, std::string name, const model::State& s, ResultFrame& f,
-                      bool results) const {
+                      Results results) const {
   f.step_index = i;
   f.step_name = std::move(name);
   f.state = &s;
-  if (results) {
-    assembler_->results(s, f.elements, f.reactions);
-  } else {  // what a sink left in a reused frame (ResultSink::take) is not this state's
-    f.elements.clear();
-    f.reactions.resize(3, 0);
+  f.pending = nullptr;
+  switch (results) {
+    case Results::Now:
+      assembler_->results(s, f.elements, f.reactions);
+      break;
+    case Results::Pending:
+      assembler_->resultInputs(s, f.inputs);
+      f.pending = assembler_.get();
+      break;
+    case Results::None:  // what a sink left in a reused frame (ResultSink::take) is not this state's
+      f.elements.clear();
+      f.reactions.resize(3, 0);
   }
 }
 
@@ -126,8 +133,13 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
   double next_report = start + 0.1 * duration;
   SummarySeries series(c_, i, *assembler_);
   ResultFrame streamed;  // one for every record of the step: its storage is reused
-  const bool results = std::any_of(sinks_.begin(), sinks_.end(),
-                                   [](const ResultSink* sink) { return sink->needsResults(); });
+  // The results of streamed records: none when no sink reads them, left to the sink when it is
+  // the only one and completes them (on its own thread), else computed here.
+  const bool needed = std::any_of(sinks_.begin(), sinks_.end(),
+                                  [](const ResultSink* sink) { return sink->needsResults(); });
+  const Results results = !needed                                                 ? Results::None
+                          : sinks_.size() == 1 && sinks_[0]->completesResults() ? Results::Pending
+                                                                                : Results::Now;
   auto on_step = [&](const model::State& s) {
     ++accepted;
     series.sample(s);

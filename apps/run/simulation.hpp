@@ -53,11 +53,13 @@ class Simulation {
  private:
   ResultFrame step(int i, model::State& state);
   ResultFrame frame(int i, std::string name, const model::State& s) const;
-  // The frame of state s of step i into f, reusing its storage; its element results and
-  // reactions only when `results` (a step's closing frame always has them: the summary and
-  // the VTK files read them).
+  // What a frame carries of the element results and reactions: nothing, the results, or the
+  // inputs to compute them from (ResultFrame::pending) for a sink that completes them.
+  enum class Results { None, Now, Pending };
+  // The frame of state s of step i into f, reusing its storage (a step's closing frame always
+  // has its results: the summary and the VTK files read them).
   void fill(int i, std::string name, const model::State& s, ResultFrame& f,
-            bool results = true) const;
+            Results results = Results::Now) const;
   ResultFrame modes(int i, const model::State& state);
   ResultFrame dynamic(int i, model::State& state);
   void release(const StepSpec& step);

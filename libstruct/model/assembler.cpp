@@ -61,6 +61,9 @@ Assembler::Assembler(const Model& model) : model_(model) {
     node_slot_.push_back(blockSlots(pattern_, node_equations(load->node())));
   for (int e = 0; e < model.elementCount(); ++e)
     if (model.element(e).hasDamping()) damped_.push_back(e);
+  element_offset_.assign(1, 0);
+  for (int e = 0; e < model.elementCount(); ++e)
+    element_offset_.push_back(element_offset_.back() + model.element(e).dofCount());
 }
 
 template <class ElementMatrix>
@@ -351,45 +354,32 @@ void Assembler::applyPrescribed(State& state) const {
 // and is reported negative. The axial force from the strain at xi = +-1 converges more slowly and
 // can be far off when EA / T is large (a curved quadratic element cannot keep its stretch
 // uniform); the integration points keep their strain-based tension.
-void Assembler::setEndTensions(const State& state, int e, EndForceScratch& scratch,
+void Assembler::setEndTensions(const State& state, int e, const ElementForces& forces,
                                element::ElementResult& r) const {
-  const element::Element& element = model_.element(e);
-  checkMemos(state, scratch);
-  if (!scratch.internal_memo) element.internalForce(context(state, e), scratch.force, nullptr);
-  const Eigen::VectorXd& f = scratch.internal_memo ? internal_memo_.elements[e] : scratch.force;
-  const std::vector<int>& nodes = element.nodes();
+  const std::vector<int>& nodes = model_.element(e).nodes();
   const int last = static_cast<int>(nodes.size()) - 1;
-  // The forces on the two end nodes, [first; last].
-  Eigen::Matrix<double, 6, 1> force;
-  force << f.segment<3>(0), f.segment<3>(3 * last);
-  // A memo without per-element loads: the structure has none (no gravity, no line loads).
-  if (!scratch.external_memo || external_memo_.per_element) {
-    if (!scratch.external_memo) elementLoad(state, e, scratch.load);
-    const Eigen::VectorXd& p = scratch.external_memo ? external_memo_.elements[e] : scratch.load;
-    force.head<3>() -= p.segment<3>(0);
-    force.tail<3>() -= p.segment<3>(3 * last);
-  }
-  if (element.hasDamping()) {
-    element.dampingForce(context(state, e), scratch.damping, nullptr);
-    force.head<3>() += scratch.damping.segment<3>(0);
-    force.tail<3>() += scratch.damping.segment<3>(3 * last);
-  }
-  if (scratch.accelerating) {  // the end rows of M_e times u''_e, column by column
-    if (end_masses_.empty()) endMasses();
-    const Eigen::Matrix<double, 6, Eigen::Dynamic>& rows = end_masses_[e];
-    const auto& index = full_index_[e];
-    for (size_t j = 0; j < index.size(); ++j)
-      force += rows.col(static_cast<Eigen::Index>(j)) * state.acceleration.data()[index[j]];
-  }
-  const auto position = [&](int local) -> Eigen::Vector3d {
-    return model_.reference().col(nodes[local]) + state.displacement.col(nodes[local]);
+  const auto at = [last](const double* v, int end) {
+    return Eigen::Map<const Eigen::Vector3d>(v + 3 * (end == 0 ? 0 : last));
   };
   for (const int end : {0, 1}) {
+    Eigen::Vector3d force = at(forces.internal, end);
+    if (forces.load) force -= at(forces.load, end);
+    if (forces.damping) force += at(forces.damping, end);
+    if (forces.accelerating) {  // the end rows of M_e times u''_e, column by column
+      const Eigen::Matrix<double, 6, Eigen::Dynamic>& rows = end_masses_[e];
+      const auto& index = full_index_[e];
+      for (size_t j = 0; j < index.size(); ++j)
+        force += rows.col(static_cast<Eigen::Index>(j)).segment<3>(3 * end) *
+                 state.acceleration.data()[index[j]];
+    }
     const int local = end == 0 ? 0 : last;
     const int next = end == 0 ? 1 : last - 1;
-    const Eigen::Vector3d on_end = force.segment<3>(3 * end);
-    const double magnitude = on_end.norm();
-    r.end_tension[end] = on_end.dot(position(next) - position(local)) > 0.0 ? -magnitude : magnitude;
+    const Eigen::Vector3d along = model_.reference().col(nodes[next]) -
+                                  model_.reference().col(nodes[local]) +
+                                  state.displacement.col(nodes[next]) -
+                                  state.displacement.col(nodes[local]);
+    const double magnitude = force.norm();
+    r.end_tension[end] = force.dot(along) > 0.0 ? -magnitude : magnitude;
   }
 }
 
@@ -397,11 +387,82 @@ void Assembler::endMasses() const {
   const std::vector<Eigen::MatrixXd> masses = elementMasses(element::MassKind::Consistent);
   end_masses_.resize(masses.size());
   for (size_t e = 0; e < masses.size(); ++e) {
-    const Eigen::Index n = masses[e].rows(), last = n - 3;
-    end_masses_[e].resize(6, n);
+    const Eigen::Index n = masses[e].rows();
     if (n < 6) continue;  // not a line of two ends: never asked
-    end_masses_[e] << masses[e].middleRows<3>(0), masses[e].middleRows<3>(last);
+    end_masses_[e].resize(6, n);
+    end_masses_[e] << masses[e].topRows<3>(), masses[e].bottomRows<3>();
   }
+}
+
+void Assembler::elementResult(const State& state, int e, const ElementForces& forces,
+                              element::ElementResult& r) const {
+  model_.element(e).result(context(state, e), r);
+  const bool line = model_.element(e).nodes().size() >= 2 && !r.point_tension.empty() &&
+                    r.point_resultant.empty();
+  if (line) setEndTensions(state, e, forces, r);
+}
+
+void Assembler::memoiseForces(const State& state) const {
+  Eigen::VectorXd unused;
+  if (!sameDisplacement(internal_memo_, state)) internalForce(state, unused, nullptr);
+  if (!sameState(external_memo_, state)) externalLoad(state, unused);
+}
+
+bool Assembler::prepareInertia(const State& state) const {
+  const bool accelerating = !state.acceleration.isZero(0.0);
+  if (accelerating && end_masses_.empty()) endMasses();
+  return accelerating;
+}
+
+void Assembler::resultInputs(const State& state, ResultInputs& in) const {
+  memoiseForces(state);
+  const auto flatten = [this](const std::vector<Eigen::VectorXd>& per_element,
+                              Eigen::VectorXd& flat) {
+    flat.resize(element_offset_.back());
+    for (size_t e = 0; e < per_element.size(); ++e)
+      flat.segment(element_offset_[e], per_element[e].size()) = per_element[e];
+  };
+  flatten(internal_memo_.elements, in.internal);
+  if (external_memo_.per_element)
+    flatten(external_memo_.elements, in.loads);
+  else
+    in.loads.resize(0);
+  in.internal_assembled = internal_memo_.assembled;
+  in.external_assembled = external_memo_.assembled;
+  in.accelerating = prepareInertia(state);
+}
+
+void Assembler::results(const State& state, const ResultInputs& in,
+                        std::vector<element::ElementResult>& elements,
+                        NodalField& reactions) const {
+  elements.resize(model_.elementCount());
+  Eigen::VectorXd viscous, damping;  // only for a model with internal damping
+  if (hasDamping()) viscous.setZero(3 * model_.nodeCount());
+  for (int e = 0; e < model_.elementCount(); ++e) {
+    ElementForces forces;
+    forces.internal = in.internal.data() + element_offset_[e];
+    forces.load = in.loads.size() ? in.loads.data() + element_offset_[e] : nullptr;
+    forces.accelerating = in.accelerating;
+    if (model_.element(e).hasDamping()) {
+      model_.element(e).dampingForce(context(state, e), damping, nullptr);
+      const auto& index = full_index_[e];
+      for (size_t a = 0; a < index.size(); ++a) viscous(index[a]) += damping(a);
+      forces.damping = damping.data();
+    }
+    elementResult(state, e, forces, elements[e]);
+  }
+  reactions.setZero(3, model_.nodeCount());
+  for (int n = 0; n < model_.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k)
+      if (model_.isConstrained(n, k))
+        reactions(k, n) = in.internal_assembled(3 * n + k) - in.external_assembled(3 * n + k) +
+                          (viscous.size() ? viscous(3 * n + k) : 0.0);
+}
+
+void Assembler::results(const State& state, std::vector<element::ElementResult>& elements,
+                        NodalField& reactions) const {
+  resultInputs(state, result_inputs_);
+  results(state, result_inputs_, elements, reactions);
 }
 
 NodalField Assembler::reactions(const State& state) const {
@@ -411,56 +472,30 @@ NodalField Assembler::reactions(const State& state) const {
 }
 
 void Assembler::reactions(const State& state, NodalField& r) const {
-  EndForceScratch scratch;
-  reactions(state, scratch, r);
-}
-
-void Assembler::reactions(const State& state, EndForceScratch& scratch, NodalField& r) const {
-  checkMemos(state, scratch);
-  Eigen::VectorXd F, P;
-  const Eigen::VectorXd& internal =
-      scratch.internal_memo ? internal_memo_.assembled : (internalForce(state, F, nullptr), F);
-  const Eigen::VectorXd& external =
-      scratch.external_memo ? external_memo_.assembled : (externalLoad(state, P), P);
+  memoiseForces(state);
   Eigen::VectorXd viscous;  // only for a model with internal damping
   if (hasDamping()) dampingForce(state, viscous, nullptr);
   r.setZero(3, model_.nodeCount());
   for (int n = 0; n < model_.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k)
       if (model_.isConstrained(n, k))
-        r(k, n) =
-            internal(3 * n + k) + (viscous.size() ? viscous(3 * n + k) : 0.0) - external(3 * n + k);
-}
-
-void Assembler::results(const State& state, std::vector<element::ElementResult>& elements,
-                        NodalField& reactions) const {
-  results_scratch_.checked = false;  // a new sweep: the memos are asked again
-  elements.resize(model_.elementCount());
-  for (int e = 0; e < model_.elementCount(); ++e)
-    elementResult(state, e, results_scratch_, elements[e]);
-  this->reactions(state, results_scratch_, reactions);
-}
-
-void Assembler::checkMemos(const State& state, EndForceScratch& scratch) const {
-  if (scratch.checked) return;
-  scratch.internal_memo = sameDisplacement(internal_memo_, state);
-  scratch.external_memo = sameState(external_memo_, state);
-  scratch.accelerating = !state.acceleration.isZero(0.0);
-  scratch.checked = true;
-}
-
-void Assembler::elementResult(const State& state, int e, EndForceScratch& scratch,
-                              element::ElementResult& r) const {
-  model_.element(e).result(context(state, e), r);
-  const bool line = model_.element(e).nodes().size() >= 2 && !r.point_tension.empty() &&
-                    r.point_resultant.empty();
-  if (line) setEndTensions(state, e, scratch, r);
+        r(k, n) = internal_memo_.assembled(3 * n + k) - external_memo_.assembled(3 * n + k) +
+                  (viscous.size() ? viscous(3 * n + k) : 0.0);
 }
 
 element::ElementResult Assembler::elementResult(const State& state, int e) const {
-  EndForceScratch scratch;
+  memoiseForces(state);
+  ElementForces forces;
+  forces.internal = internal_memo_.elements[e].data();
+  forces.load = external_memo_.per_element ? external_memo_.elements[e].data() : nullptr;
+  forces.accelerating = prepareInertia(state);
+  Eigen::VectorXd damping;
+  if (model_.element(e).hasDamping()) {
+    model_.element(e).dampingForce(context(state, e), damping, nullptr);
+    forces.damping = damping.data();
+  }
   element::ElementResult r;
-  elementResult(state, e, scratch, r);
+  elementResult(state, e, forces, r);
   return r;
 }
 
@@ -472,10 +507,8 @@ std::vector<element::ElementResult> Assembler::elementResults(const State& state
 
 void Assembler::elementResults(const State& state,
                                std::vector<element::ElementResult>& results) const {
-  results.resize(model_.elementCount());
-  results_scratch_.checked = false;  // a new sweep: the memos are asked again
-  for (int e = 0; e < model_.elementCount(); ++e)
-    elementResult(state, e, results_scratch_, results[e]);
+  NodalField unused;
+  this->results(state, results, unused);
 }
 
 }  // namespace flexmoor::model

@@ -25,6 +25,18 @@ struct LoadMatrices {
   std::optional<Weights> summed;
 };
 
+// What a state's element results and reactions are computed from besides the state and the
+// model: the forces of the Newton sweep that accepted it (or computed anew), taken by
+// Assembler::resultInputs. Assembler::results(state, inputs, ...) reads nothing else that a run
+// changes (no memo, no load with caches of its own: sea kinematics), so another thread may
+// compute a record's results from a copy of its state and these while the run goes on.
+struct ResultInputs {
+  Eigen::VectorXd internal;  // every element's internal force, element after element
+  Eigen::VectorXd loads;     // every element's own loads (gravity, line loads) so; empty if none
+  Eigen::VectorXd internal_assembled, external_assembled;  // F and P, full vectors
+  bool accelerating = false;                               // some u'' is not zero
+};
+
 class Assembler {
  public:
   explicit Assembler(const Model& model);
@@ -88,6 +100,12 @@ class Assembler {
   // result record needs.
   void results(const State& state, std::vector<element::ElementResult>& elements,
                NodalField& reactions) const;
+  // The same in two halves: the inputs at the state (on the run's thread, where the memos are
+  // that state's), then the results from them (on any thread, while the run goes on, as long as
+  // this assembler lives and the model is not changed).
+  void resultInputs(const State& state, ResultInputs& inputs) const;
+  void results(const State& state, const ResultInputs& inputs,
+               std::vector<element::ElementResult>& elements, NodalField& reactions) const;
 
  private:
   element::ElementContext context(const State& state, int e) const {
@@ -116,18 +134,22 @@ class Assembler {
   // element made (J.summed: element_jacobians_.summed set) into J.stiffness.
   void scatterElementMatrices(const std::vector<int>& slots, const element::LoadMatrices& k,
                               LoadMatrices& J, double scale) const;
-  // Work space of one sweep over the elements at one state, and whether the memos below hold
-  // that state's forces (asked once a sweep).
-  struct EndForceScratch {
-    Eigen::VectorXd force, load, damping;
-    bool checked = false, internal_memo = false, external_memo = false, accelerating = false;
+  // One line element's forces for its end-force balance (its dofs' values, in element order):
+  // internal force, own loads and internal damping (null: none).
+  struct ElementForces {
+    const double* internal = nullptr;
+    const double* load = nullptr;
+    const double* damping = nullptr;
+    bool accelerating = false;
   };
-  void checkMemos(const State& state, EndForceScratch& scratch) const;
-  void reactions(const State& state, EndForceScratch& scratch, NodalField& r) const;
-  void setEndTensions(const State& state, int e, EndForceScratch& scratch,
+  void setEndTensions(const State& state, int e, const ElementForces& forces,
                       element::ElementResult& r) const;
-  void elementResult(const State& state, int e, EndForceScratch& scratch,
+  void elementResult(const State& state, int e, const ElementForces& forces,
                      element::ElementResult& r) const;
+  // Makes the memos below hold the state's internal force and external load.
+  void memoiseForces(const State& state) const;
+  // Whether the state accelerates; if so, the end masses exist from here on.
+  bool prepareInertia(const State& state) const;
 
   // The last internal force and external load computed, assembled and per element, with the
   // state they belong to. A record of an accepted time step asks for the forces of the very
@@ -155,7 +177,8 @@ class Assembler {
   // only).
   mutable std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic>> end_masses_;
   void endMasses() const;
-  mutable EndForceScratch results_scratch_;  // elementResults' work space, kept between calls
+  std::vector<Eigen::Index> element_offset_;  // element e's first dof in ResultInputs' vectors
+  mutable ResultInputs result_inputs_;         // results()' inputs, reused
   mutable element::LoadMatrices element_jacobians_;  // one element's load matrices, reused
   mutable Eigen::VectorXd element_load_;             // one element's share of a load, reused
   mutable Eigen::MatrixXd element_tangent_;          // one element's tangent, reused
