@@ -142,6 +142,37 @@ TEST_F(NetcdfFileTest, BufferedRecordsReachTheFileWholeAndInOrder) {
   }
 }
 
+// A file that grows is written back to the disk as it grows (DiskWriteback): every 4 MiB of
+// records the kernel is asked to start writing, so that the fsync that puts the finished file
+// in place waits only for the rest. 10 MiB of records: at least two requests, and the file
+// reads back whole.
+TEST_F(NetcdfFileTest, AGrowingFileIsWrittenBackAsItGrows) {
+  const size_t records = 10u << 20 >> 10;  // 1 KiB records
+  {
+    NetcdfFile file(path_);
+    const int step = file.defineDimension("step", NC_UNLIMITED);
+    const int node = file.defineDimension("value", 128);
+    const int u = file.defineVariable("u", NC_DOUBLE, {step, node}, "u", "m");
+    file.endDefine();
+    std::vector<double> values(128);
+    for (size_t r = 0; r < records; ++r) {
+      values.assign(128, 1.0 * r);
+      file.put(u, {r, 0}, {1, 128}, values.data());
+    }
+    file.flush();
+#ifdef __linux__
+    EXPECT_GE(file.writebacks(), 2);
+#endif
+  }
+  int id = -1, var = -1;
+  ASSERT_EQ(nc_open(path_.c_str(), NC_NOWRITE, &id), NC_NOERR);
+  std::vector<double> u(128 * records);
+  ASSERT_EQ(nc_inq_varid(id, "u", &var), NC_NOERR);
+  ASSERT_EQ(nc_get_var_double(id, var, u.data()), NC_NOERR);
+  nc_close(id);
+  for (size_t r = 0; r < records; r += 97) ASSERT_EQ(u[128 * r + 127], 1.0 * r) << r;
+}
+
 // sync() after every record must not flush every time: a flush costs milliseconds, growing with
 // the file. Within one flush interval (1 s), 1,000 syncs make one flush, the first; flush()
 // always flushes; with an interval of zero every sync flushes (the behaviour before).

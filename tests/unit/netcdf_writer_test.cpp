@@ -302,6 +302,23 @@ TEST_F(NetcdfWriterTest, AFrameWithoutTheResultsItsFieldsNeedIsRefused) {
   EXPECT_EQ(writer.records(), 0u);
 }
 
+// A frame whose results are still pending (a sink that completes them did not) is refused, not
+// written with whatever its storage held.
+TEST_F(NetcdfWriterTest, AFrameWithPendingResultsIsRefused) {
+  NetcdfWriter writer(path_, *case_.model, case_);
+  case_.model->numberEquations();
+  const model::Assembler assembler(*case_.model);
+  ResultFrame pending = frameOf(0, first_);
+  pending.pending = &assembler;
+  try {
+    writer.write(pending);
+    FAIL() << "a frame with pending results was written";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("still to be computed"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(writer.records(), 0u);
+}
+
 TEST_F(NetcdfWriterTest, NaNDisplacementIsRefusedNamingVariableAndIndex) {
   NetcdfWriter writer(path_, *case_.model, case_);
   writer.write(frameOf(0, first_));
