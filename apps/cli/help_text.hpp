@@ -86,7 +86,9 @@ dynamic step after another continues its motion; static and relax steps end at r
     R"(
 Outputs, in DIR (default results/<case>/):
   DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions, one record per step or per
-                       output time, flushed as it goes
+                       output time, flushed as it goes; written by a second thread while the
+                       run goes on when it streams 1,000 records or more (not with
+                       --no-writer-thread)
   DIR/<case>-<n>.vtk   the deformed shape (and mode shapes) after step n (not with --no-vtk)
   DIR/<case>.summary.json  the case's summary quantities with their units
 Every output's name starts with the case's, so cases can share one -o DIR. Outputs are put in

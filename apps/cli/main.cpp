@@ -164,7 +164,7 @@ int main(int argc, char** argv) {
   run_command->add_flag("--no-figure", no_figure, "do not draw the case's figure (DIR/<case>.png)");
   run_command->add_flag("--no-writer-thread", no_writer_thread,
                         "write the netCDF records in the run's own thread (by default a second "
-                        "thread writes them while the run goes on)");
+                        "thread writes them while the run goes on, when it streams 1,000 or more)");
 
   CLI::App* check_command = app.add_subcommand("check", cli::kCheckSummary);
   check_command->footer(cli::kCheckDetails);

@@ -62,9 +62,13 @@ BackgroundSink::Held& BackgroundSink::next(const ResultFrame& frame) {
 void BackgroundSink::publish() {
   const size_t n = published_.load(std::memory_order_relaxed) + 1;
   published_.store(n, std::memory_order_release);
-  if (writer_asleep_.load(std::memory_order_relaxed) &&
-      2 * (n - written_.load(std::memory_order_relaxed)) >= ring_.size())
+  if (!writer_asleep_.load(std::memory_order_relaxed)) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (2 * (n - written_.load(std::memory_order_relaxed)) >= ring_.size() ||
+      now - last_wake_ >= kWakeSpacing) {
+    last_wake_ = now;
     wakeWriter();
+  }
 }
 
 void BackgroundSink::write(const ResultFrame& frame) {

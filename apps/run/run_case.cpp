@@ -1,5 +1,6 @@
 #include "apps/run/run_case.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <optional>
@@ -45,6 +46,22 @@ void putOutputsInPlace(const Case& c, const RunOptions& options, const CaseOutpu
   moveIntoPlace(files.partialNetcdf(), files.netcdf());
 }
 
+// The records a run streams from its dynamic steps (time steps over output_every): a thread of
+// their own pays for itself from about kBackgroundRecords of them (docs/performance.md, "Output
+// cost, session 16": Example 9's 232 records cost 2 ms more with it, the demo's 40,000 save 40 ms).
+constexpr long kBackgroundRecords = 1000;
+
+long streamedRecords(const Case& c) {
+  long records = 0;
+  for (const StepSpec& step : c.steps) {
+    if (step.kind != StepSpec::Kind::Dynamic) continue;
+    long steps = 0;
+    for (const solve::TimeSegment& segment : step.dynamic.schedule) steps += segment.steps;
+    records += steps / std::max(1, step.output_every);
+  }
+  return records;
+}
+
 }  // namespace
 
 RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
@@ -74,7 +91,8 @@ RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
         // Destroyed first: it writes what is still waiting (with the simulation's assembler,
         // which completes pending results) before the file closes.
         std::optional<BackgroundSink> background;
-        if (options.background_writer) background.emplace(netcdf);
+        if (options.background_writer && streamedRecords(c) >= kBackgroundRecords)
+          background.emplace(netcdf);
         simulation.addSink(background ? static_cast<ResultSink&>(*background) : netcdf);
         for (StateObserver* o : options.observers) simulation.addObserver(*o);
         result = simulation.run();

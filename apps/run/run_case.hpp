@@ -21,8 +21,9 @@ struct RunOptions {
   std::string output_dir;  // empty: results/<case>
   bool vtk = true;         // write DIR/<case>-<step>.vtk for ParaView
   bool figure = true;      // draw DIR/<case>.png when the case has a figure:
-  // Write the netCDF records on a thread of their own while the run goes on (background_sink.hpp);
-  // false: in the run's thread (a study's members, which fill the cores already).
+  // Write the netCDF records on a thread of their own while the run goes on (background_sink.hpp)
+  // when the case streams a thousand records or more; false: always in the run's thread (a
+  // study's members, which fill the cores already).
   bool background_writer = true;
   // See every accepted state of the dynamic steps (a study's series); they must outlive the run.
   std::vector<StateObserver*> observers;
