@@ -40,7 +40,7 @@ class BackgroundSink final : public ResultSink {
   static constexpr size_t kRingBytes = 8u << 20;
   static constexpr size_t kMaxFrames = 1024;
   static constexpr std::chrono::milliseconds kWakeInterval{100};
-  static constexpr std::chrono::milliseconds kWakeSpacing{1};
+  static constexpr std::chrono::milliseconds kWakeSpacing{10};
 
   explicit BackgroundSink(ResultSink& sink);
   ~BackgroundSink() override;

@@ -25,7 +25,7 @@ void outOfBalance(const model::Assembler& assembler, const model::State& state,
   r.scale = std::max(P.norm(), F.norm());
   r.floor = 0.0;
   if (K && K->rows() > 0 && r.scale > 0.0) {
-    const model::NodalField x = assembler.model().reference() + state.displacement;
+    const auto x = assembler.model().reference() + state.displacement;  // not materialised
     const double rms = std::sqrt(x.squaredNorm() / std::max<Eigen::Index>(x.size(), 1));
     const double k = K->diagonal().cwiseAbs().maxCoeff();
     r.floor = std::numeric_limits<double>::epsilon() * rms * k *

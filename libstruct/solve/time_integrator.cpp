@@ -113,9 +113,10 @@ void TimeIntegrator::applySupports(model::State& next, const model::State& previ
 // again at that very state.
 bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   const double a0 = 1.0 / (beta_ * h * h), a1 = 1.0 / (beta_ * h), a2 = 0.5 / beta_ - 1.0;
-  const VectorXd u_n = assembler_.restrictToFree(asVector(s.displacement));
-  const VectorXd v_n = assembler_.restrictToFree(asVector(s.velocity));
-  const VectorXd acc_n = assembler_.restrictToFree(asVector(s.acceleration));
+  VectorXd &u_n = scratch_.u_n, &v_n = scratch_.v_n, &acc_n = scratch_.acc_n;
+  assembler_.restrictToFree(asVector(s.displacement), u_n);
+  assembler_.restrictToFree(asVector(s.velocity), v_n);
+  assembler_.restrictToFree(asVector(s.acceleration), acc_n);
   if (o_.rayleigh_stiffness != 0.0) {
     VectorXd F;
     assembler_.internalForce(s, F, &K0_);
@@ -141,7 +142,7 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   summedWeights(h);
   const bool tangent_missing = refresh_each_step && !(kept && kept_.tangent);
   const bool loads_missing = motion_loads_ && !(kept && kept_.loads);
-  VectorXd previous_balance;  // HHT: P_n - F_n - F_d,n - C v_n
+  VectorXd& previous_balance = scratch_.previous_balance;  // HHT: P_n - F_n - F_d,n - C v_n
   if (tangent_missing || loads_missing || (alpha_ != 0.0 && !kept)) {
     Residual& start = scratch_.residual;
     balance(s, tangent_missing, loads_missing, start);
@@ -152,7 +153,8 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   }
   kept_.valid = false;
 
-  model::State next = s;
+  model::State& next = scratch_.next;
+  next = s;
   next.time = s.time + h;
   applySupports(next, s, h);
   // Predictor: the motion continued at its last velocity, u_n + h u'_n, which starts Newton
@@ -160,7 +162,9 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   // too: u''_n carries the stiff axial modes, which h^2 / 2 u''_n amplifies (a light line in a
   // wave needs twice the iterations). The self-corrective scheme keeps the dissertation's u_n
   // (its one solve from there is the step, Eq. 4.20).
-  VectorXd u = self_corrective ? u_n : VectorXd(u_n + h * v_n);
+  VectorXd& u = scratch_.u;
+  u = u_n;
+  if (!self_corrective) u += h * v_n;
   trace_.start();
   singular_ = false;
   VectorXd& du = scratch_.increment;  // the last increment taken
@@ -196,7 +200,12 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
       s = next;
       steps_since_update_ = refresh_each_step ? 0 : steps_since_update_ + 1;
       s.motion = record(s);
-      kept_ = {true, tangent, loads, h, s, balance_here};
+      kept_.valid = true;
+      kept_.tangent = tangent;
+      kept_.loads = loads;
+      kept_.h = h;
+      kept_.state = s;
+      kept_.balance = balance_here;
       return true;
     }
     if (it == o_.max_iterations) return false;

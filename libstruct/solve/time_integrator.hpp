@@ -113,6 +113,8 @@ class TimeIntegrator {
     BalanceScratch balance;
     Residual residual;
     Eigen::VectorXd viscous, inertia, free, acceleration, velocity, balance_here, increment;
+    Eigen::VectorXd u_n, v_n, acc_n, u, previous_balance;  // the step's start and iterate
+    model::State next;                                     // the state the step goes to
   } scratch_;
 };
 
