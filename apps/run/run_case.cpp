@@ -1,5 +1,7 @@
 #include "apps/run/run_case.hpp"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <iomanip>
@@ -51,6 +53,14 @@ void putOutputsInPlace(const Case& c, const RunOptions& options, const CaseOutpu
 // cost, session 16": Example 9's 232 records cost 2 ms more with it, the demo's 40,000 save 40 ms).
 constexpr long kBackgroundRecords = 1000;
 
+// The cores this process may run on (its affinity: taskset, a container's CPU set); a writing
+// thread only slows a run that has no second one.
+int usableCores() {
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof(set), &set) != 0) return 1;
+  return CPU_COUNT(&set);
+}
+
 long streamedRecords(const Case& c) {
   long records = 0;
   for (const StepSpec& step : c.steps) {
@@ -91,7 +101,8 @@ RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
         // Destroyed first: it writes what is still waiting (with the simulation's assembler,
         // which completes pending results) before the file closes.
         std::optional<BackgroundSink> background;
-        if (options.background_writer && streamedRecords(c) >= kBackgroundRecords)
+        if (options.background_writer && streamedRecords(c) >= kBackgroundRecords &&
+            usableCores() >= 2)
           background.emplace(netcdf);
         simulation.addSink(background ? static_cast<ResultSink&>(*background) : netcdf);
         for (StateObserver* o : options.observers) simulation.addObserver(*o);

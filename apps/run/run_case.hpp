@@ -22,8 +22,8 @@ struct RunOptions {
   bool vtk = true;         // write DIR/<case>-<step>.vtk for ParaView
   bool figure = true;      // draw DIR/<case>.png when the case has a figure:
   // Write the netCDF records on a thread of their own while the run goes on (background_sink.hpp)
-  // when the case streams a thousand records or more; false: always in the run's thread (a
-  // study's members, which fill the cores already).
+  // when the case streams a thousand records or more and the process may use two cores or more;
+  // false: always in the run's thread (a study's members, which fill the cores already).
   bool background_writer = true;
   // See every accepted state of the dynamic steps (a study's series); they must outlive the run.
   std::vector<StateObserver*> observers;
