@@ -451,12 +451,17 @@ void Assembler::results(const State& state, const ResultInputs& in,
     }
     elementResult(state, e, forces, elements[e]);
   }
-  reactions.setZero(3, model_.nodeCount());
+  supportReactions(in.internal_assembled, in.external_assembled, viscous, reactions);
+}
+
+void Assembler::supportReactions(const Eigen::VectorXd& internal, const Eigen::VectorXd& external,
+                                 const Eigen::VectorXd& viscous, NodalField& r) const {
+  r.setZero(3, model_.nodeCount());
   for (int n = 0; n < model_.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k)
       if (model_.isConstrained(n, k))
-        reactions(k, n) = in.internal_assembled(3 * n + k) - in.external_assembled(3 * n + k) +
-                          (viscous.size() ? viscous(3 * n + k) : 0.0);
+        r(k, n) = internal(3 * n + k) - external(3 * n + k) +
+                  (viscous.size() ? viscous(3 * n + k) : 0.0);
 }
 
 void Assembler::results(const State& state, std::vector<element::ElementResult>& elements,
@@ -475,12 +480,7 @@ void Assembler::reactions(const State& state, NodalField& r) const {
   memoiseForces(state);
   Eigen::VectorXd viscous;  // only for a model with internal damping
   if (hasDamping()) dampingForce(state, viscous, nullptr);
-  r.setZero(3, model_.nodeCount());
-  for (int n = 0; n < model_.nodeCount(); ++n)
-    for (int k = 0; k < 3; ++k)
-      if (model_.isConstrained(n, k))
-        r(k, n) = internal_memo_.assembled(3 * n + k) - external_memo_.assembled(3 * n + k) +
-                  (viscous.size() ? viscous(3 * n + k) : 0.0);
+  supportReactions(internal_memo_.assembled, external_memo_.assembled, viscous, r);
 }
 
 element::ElementResult Assembler::elementResult(const State& state, int e) const {

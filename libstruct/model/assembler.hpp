@@ -146,6 +146,9 @@ class Assembler {
                       element::ElementResult& r) const;
   void elementResult(const State& state, int e, const ElementForces& forces,
                      element::ElementResult& r) const;
+  // F + F_d - P at the constrained dofs (viscous empty: no internal damping), zero elsewhere.
+  void supportReactions(const Eigen::VectorXd& internal, const Eigen::VectorXd& external,
+                        const Eigen::VectorXd& viscous, NodalField& r) const;
   // Makes the memos below hold the state's internal force and external load.
   void memoiseForces(const State& state) const;
   // Whether the state accelerates; if so, the end masses exist from here on.
