@@ -75,7 +75,8 @@ void Simulation::fill(int i, std::string name, const model::State& s, ResultFram
       assembler_->resultInputs(s, f.inputs);
       f.pending = assembler_.get();
       break;
-    case Results::None:  // what a sink left in a reused frame (ResultSink::take) is not this state's
+    case Results::None:
+      // What a sink left in a reused frame (ResultSink::take) is not this state's.
       f.elements.clear();
       f.reactions.resize(3, 0);
   }
@@ -137,7 +138,7 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
   // the only one and completes them (on its own thread), else computed here.
   const bool needed = std::any_of(sinks_.begin(), sinks_.end(),
                                   [](const ResultSink* sink) { return sink->needsResults(); });
-  const Results results = !needed                                                 ? Results::None
+  const Results results = !needed                                               ? Results::None
                           : sinks_.size() == 1 && sinks_[0]->completesResults() ? Results::Pending
                                                                                 : Results::Now;
   auto on_step = [&](const model::State& s) {

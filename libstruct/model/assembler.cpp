@@ -374,10 +374,9 @@ void Assembler::setEndTensions(const State& state, int e, const ElementForces& f
     }
     const int local = end == 0 ? 0 : last;
     const int next = end == 0 ? 1 : last - 1;
-    const Eigen::Vector3d along = model_.reference().col(nodes[next]) -
-                                  model_.reference().col(nodes[local]) +
-                                  state.displacement.col(nodes[next]) -
-                                  state.displacement.col(nodes[local]);
+    const Eigen::Vector3d along =
+        model_.reference().col(nodes[next]) - model_.reference().col(nodes[local]) +
+        state.displacement.col(nodes[next]) - state.displacement.col(nodes[local]);
     const double magnitude = force.norm();
     r.end_tension[end] = force.dot(along) > 0.0 ? -magnitude : magnitude;
   }
@@ -460,8 +459,8 @@ void Assembler::supportReactions(const Eigen::VectorXd& internal, const Eigen::V
   for (int n = 0; n < model_.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k)
       if (model_.isConstrained(n, k))
-        r(k, n) = internal(3 * n + k) - external(3 * n + k) +
-                  (viscous.size() ? viscous(3 * n + k) : 0.0);
+        r(k, n) =
+            internal(3 * n + k) - external(3 * n + k) + (viscous.size() ? viscous(3 * n + k) : 0.0);
 }
 
 void Assembler::results(const State& state, std::vector<element::ElementResult>& elements,

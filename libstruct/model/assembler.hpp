@@ -181,7 +181,7 @@ class Assembler {
   mutable std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic>> end_masses_;
   void endMasses() const;
   std::vector<Eigen::Index> element_offset_;  // element e's first dof in ResultInputs' vectors
-  mutable ResultInputs result_inputs_;         // results()' inputs, reused
+  mutable ResultInputs result_inputs_;        // results()' inputs, reused
   mutable element::LoadMatrices element_jacobians_;  // one element's load matrices, reused
   mutable Eigen::VectorXd element_load_;             // one element's share of a load, reused
   mutable Eigen::MatrixXd element_tangent_;          // one element's tangent, reused

@@ -13,11 +13,10 @@
 
 #include <gtest/gtest.h>
 
-#include <sstream>
-
 #include <fstream>
 #include <iterator>
 #include <regex>
+#include <sstream>
 
 #include "apps/case/case_reader.hpp"
 #include "apps/output/background_sink.hpp"
@@ -82,15 +81,14 @@ TEST(Simulation, RunsACaseInProcessAsTheCommandDoes) {
 }
 
 TEST(Simulation, RecordsCompletedOnTheWritingThreadAreTheRunThreadsOnes) {
-  expectSameRecordsOnTheWritingThread(
-      app::readCase(app::resolveCasePath("ex8-relaxation-test")), 601);
-  expectSameRecordsOnTheWritingThread(
-      app::readCase(app::resolveCasePath("ex9-submerged-tube")), 10);
+  expectSameRecordsOnTheWritingThread(app::readCase(app::resolveCasePath("ex8-relaxation-test")),
+                                      601);
+  expectSameRecordsOnTheWritingThread(app::readCase(app::resolveCasePath("ex9-submerged-tube")),
+                                      10);
   std::ifstream in(app::resolveCasePath("driven-taut-cable"));
   const std::string demo{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  const std::string damped =
-      std::regex_replace(demo, std::regex("density: 7850 kg/m\\^3\\}"),
-                         "density: 7850 kg/m^3, damping: {zeta: 0.8}}");
+  const std::string damped = std::regex_replace(demo, std::regex("density: 7850 kg/m\\^3\\}"),
+                                                "density: 7850 kg/m^3, damping: {zeta: 0.8}}");
   ASSERT_NE(damped, demo);
   const app::Case c = app::readCase(writeCase("damped-demo.yaml", damped));
   ASSERT_TRUE(c.model->element(0).hasDamping());
