@@ -62,13 +62,9 @@ BackgroundSink::Held& BackgroundSink::next(const ResultFrame& frame) {
 void BackgroundSink::publish() {
   const size_t n = published_.load(std::memory_order_relaxed) + 1;
   published_.store(n, std::memory_order_release);
-  if (!writer_asleep_.load(std::memory_order_relaxed)) return;
-  const auto now = std::chrono::steady_clock::now();
-  if (2 * (n - written_.load(std::memory_order_relaxed)) >= ring_.size() ||
-      now - last_wake_ >= kWakeSpacing) {
-    last_wake_ = now;
+  if (writer_asleep_.load(std::memory_order_relaxed) &&
+      4 * (n - written_.load(std::memory_order_relaxed)) >= 3 * ring_.size())
     wakeWriter();
-  }
 }
 
 void BackgroundSink::write(const ResultFrame& frame) {
@@ -119,22 +115,27 @@ bool BackgroundSink::writePublished() {
   }
 }
 
-// The writing thread: sleeps until it is woken or kWakeInterval has passed, then writes what is
-// published, then flushes when asked; ends when the sink is destroyed, after the last frames.
+// The writing thread: sleeps until it is woken or its poll interval has passed, then writes what
+// is published, then flushes when asked; ends when the sink is destroyed, after the last frames.
 void BackgroundSink::work() {
   bool working = true;  // the sink has not failed
+  auto sleep = kFirstPoll;
   for (;;) {
     bool flush = false, stop = false;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       if (!flush_asked_ && !stop_) {
         writer_asleep_.store(true, std::memory_order_relaxed);
-        work_.wait_for(lock, kWakeInterval);
+        work_.wait_for(lock, sleep);
         writer_asleep_.store(false, std::memory_order_relaxed);
       }
       flush = flush_asked_;
       stop = stop_;
     }
+    // Frames found: look again soon; none: twice as late, up to kWakeInterval.
+    const bool found =
+        published_.load(std::memory_order_acquire) != written_.load(std::memory_order_relaxed);
+    sleep = found ? kFirstPoll : std::min<std::chrono::milliseconds>(2 * sleep, kWakeInterval);
     if (working) working = writePublished();
     done_.notify_one();
     if (flush) {

@@ -7,14 +7,14 @@
 // (docs/performance.md, "Output cost, session 16").
 //
 // The frames wait in a ring (at most kRingBytes of them, at least two). The run's thread fills a
-// free frame and publishes it with one atomic store; the writing thread takes every published
-// frame when it wakes: when a frame is published while it sleeps, at most once every
-// kWakeSpacing (a wake-up costs the waking thread microseconds on a virtual machine: once per
-// record would cost a small model's run more than the record), when half of the ring waits, when
-// the ring is full, on a flush, and by itself every kWakeInterval. So a record reaches the sink
-// (and, at the sink's own flush interval, the disk) within about kWakeSpacing, and the writing
-// overlaps the run however slowly or quickly records come. write() blocks only while the ring is
-// full. Every call on the sink is made from the writing thread, one
+// free frame and publishes it with one atomic store; the writing thread looks for published
+// frames by itself, kFirstPoll after it last found some and twice as late each time it found
+// none, up to kWakeInterval, and writes them. The run's thread wakes it only when three quarters
+// of the ring wait, when the ring is full and on a flush: a wake-up costs the waking thread
+// 10-30 us on a virtual machine, more than a small model's time step. So a record reaches the
+// sink (and, at the sink's own flush interval, the disk) within kWakeInterval at most, within
+// about kFirstPoll while records keep coming, and the writing overlaps the run. write() blocks
+// only while the ring is full. Every call on the sink is made from the writing thread, one
 // at a time: a sink that is not thread-safe (netCDF, HDF5) may be wrapped as it is.
 //
 // An exception of the sink's write or flush stops the writing: the frames after it are dropped
@@ -39,8 +39,8 @@ class BackgroundSink final : public ResultSink {
  public:
   static constexpr size_t kRingBytes = 8u << 20;
   static constexpr size_t kMaxFrames = 1024;
+  static constexpr std::chrono::milliseconds kFirstPoll{1};
   static constexpr std::chrono::milliseconds kWakeInterval{100};
-  static constexpr std::chrono::milliseconds kWakeSpacing{10};
 
   explicit BackgroundSink(ResultSink& sink);
   ~BackgroundSink() override;
@@ -81,7 +81,6 @@ class BackgroundSink final : public ResultSink {
   // Frames published and frames written since the start (frame n is ring_[n % size]): the run's
   // thread alone stores published_, the writing thread alone written_.
   std::atomic<size_t> published_{0}, written_{0};
-  std::chrono::steady_clock::time_point last_wake_;  // the run's thread alone
   std::atomic<bool> failed_{false}, writer_asleep_{false};
   // Under the lock.
   bool flush_asked_ = false, flushed_ = false, stop_ = false;
