@@ -1,6 +1,7 @@
 #pragma once
 // A case as read from its YAML file: the model it builds, the analysis steps to run in order, and
 // the summary quantities it declares. Everything is in the case's consistent unit system.
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -56,6 +57,14 @@ struct StepSpec {
     if (kind == Kind::Dynamic)
       for (const solve::TimeSegment& segment : dynamic.schedule) t += segment.dt * segment.steps;
     return t;
+  }
+  // The records a dynamic step streams: every output_every-th of its time steps (about: the last
+  // one is always written); 0 for the other kinds.
+  long streamedRecords() const {
+    long steps = 0;
+    if (kind == Kind::Dynamic)
+      for (const solve::TimeSegment& segment : dynamic.schedule) steps += segment.steps;
+    return steps / std::max(1, output_every);
   }
 };
 

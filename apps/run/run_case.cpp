@@ -2,7 +2,6 @@
 
 #include <sched.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <optional>
@@ -63,12 +62,7 @@ int usableCores() {
 
 long streamedRecords(const Case& c) {
   long records = 0;
-  for (const StepSpec& step : c.steps) {
-    if (step.kind != StepSpec::Kind::Dynamic) continue;
-    long steps = 0;
-    for (const solve::TimeSegment& segment : step.dynamic.schedule) steps += segment.steps;
-    records += steps / std::max(1, step.output_every);
-  }
+  for (const StepSpec& step : c.steps) records += step.streamedRecords();
   return records;
 }
 

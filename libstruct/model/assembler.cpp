@@ -431,25 +431,40 @@ void Assembler::resultInputs(const State& state, ResultInputs& in) const {
   in.accelerating = prepareInertia(state);
 }
 
-void Assembler::results(const State& state, const ResultInputs& in,
-                        std::vector<element::ElementResult>& elements,
-                        NodalField& reactions) const {
+Assembler::ElementForces Assembler::elementForces(const State& state, int e, const double* internal,
+                                                  const double* load, bool accelerating,
+                                                  Eigen::VectorXd& damping) const {
+  ElementForces forces{internal, load, nullptr, accelerating};
+  if (model_.element(e).hasDamping()) {
+    model_.element(e).dampingForce(context(state, e), damping, nullptr);
+    forces.damping = damping.data();
+  }
+  return forces;
+}
+
+void Assembler::elementResults(const State& state, const ResultInputs& in,
+                               std::vector<element::ElementResult>& elements,
+                               Eigen::VectorXd* viscous) const {
   elements.resize(model_.elementCount());
-  Eigen::VectorXd viscous, damping;  // only for a model with internal damping
-  if (hasDamping()) viscous.setZero(3 * model_.nodeCount());
+  Eigen::VectorXd damping;
+  if (viscous && hasDamping()) viscous->setZero(3 * model_.nodeCount());
   for (int e = 0; e < model_.elementCount(); ++e) {
-    ElementForces forces;
-    forces.internal = in.internal.data() + element_offset_[e];
-    forces.load = in.loads.size() ? in.loads.data() + element_offset_[e] : nullptr;
-    forces.accelerating = in.accelerating;
-    if (model_.element(e).hasDamping()) {
-      model_.element(e).dampingForce(context(state, e), damping, nullptr);
+    const double* load = in.loads.size() ? in.loads.data() + element_offset_[e] : nullptr;
+    const ElementForces forces = elementForces(state, e, in.internal.data() + element_offset_[e],
+                                               load, in.accelerating, damping);
+    if (viscous && forces.damping) {
       const auto& index = full_index_[e];
-      for (size_t a = 0; a < index.size(); ++a) viscous(index[a]) += damping(a);
-      forces.damping = damping.data();
+      for (size_t a = 0; a < index.size(); ++a) (*viscous)(index[a]) += damping(a);
     }
     elementResult(state, e, forces, elements[e]);
   }
+}
+
+void Assembler::results(const State& state, const ResultInputs& in,
+                        std::vector<element::ElementResult>& elements,
+                        NodalField& reactions) const {
+  Eigen::VectorXd viscous;  // only for a model with internal damping
+  elementResults(state, in, elements, &viscous);
   supportReactions(in.internal_assembled, in.external_assembled, viscous, reactions);
 }
 
@@ -484,15 +499,10 @@ void Assembler::reactions(const State& state, NodalField& r) const {
 
 element::ElementResult Assembler::elementResult(const State& state, int e) const {
   memoiseForces(state);
-  ElementForces forces;
-  forces.internal = internal_memo_.elements[e].data();
-  forces.load = external_memo_.per_element ? external_memo_.elements[e].data() : nullptr;
-  forces.accelerating = prepareInertia(state);
+  const double* load = external_memo_.per_element ? external_memo_.elements[e].data() : nullptr;
   Eigen::VectorXd damping;
-  if (model_.element(e).hasDamping()) {
-    model_.element(e).dampingForce(context(state, e), damping, nullptr);
-    forces.damping = damping.data();
-  }
+  const ElementForces forces = elementForces(state, e, internal_memo_.elements[e].data(), load,
+                                             prepareInertia(state), damping);
   element::ElementResult r;
   elementResult(state, e, forces, r);
   return r;
@@ -506,8 +516,8 @@ std::vector<element::ElementResult> Assembler::elementResults(const State& state
 
 void Assembler::elementResults(const State& state,
                                std::vector<element::ElementResult>& results) const {
-  NodalField unused;
-  this->results(state, results, unused);
+  resultInputs(state, result_inputs_);
+  elementResults(state, result_inputs_, results, nullptr);  // no reactions asked
 }
 
 }  // namespace flexmoor::model

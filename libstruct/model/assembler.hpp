@@ -146,6 +146,15 @@ class Assembler {
                       element::ElementResult& r) const;
   void elementResult(const State& state, int e, const ElementForces& forces,
                      element::ElementResult& r) const;
+  // Element e's forces from its internal force and own loads (null: none); its internal damping
+  // force, when it has one, is computed into `damping`.
+  ElementForces elementForces(const State& state, int e, const double* internal, const double* load,
+                              bool accelerating, Eigen::VectorXd& damping) const;
+  // Every element's result from the inputs; with `viscous`, the assembled internal damping
+  // force too (left empty without internal damping), for the reactions.
+  void elementResults(const State& state, const ResultInputs& inputs,
+                      std::vector<element::ElementResult>& elements,
+                      Eigen::VectorXd* viscous) const;
   // F + F_d - P at the constrained dofs (viscous empty: no internal damping), zero elsewhere.
   void supportReactions(const Eigen::VectorXd& internal, const Eigen::VectorXd& external,
                         const Eigen::VectorXd& viscous, NodalField& r) const;
