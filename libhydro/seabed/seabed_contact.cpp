@@ -9,12 +9,19 @@ SeabedPointLoad seabedLoad(const SeabedProperties& bed, double delta, const Eige
   using Eigen::Matrix3d;
   using Eigen::Vector3d;
   SeabedPointLoad out;
-  if (!(delta > 0.0)) return out;
+  // On the bed (delta = 0) the force is zero but the contact's stiffness is there: a line laid
+  // exactly on the bed (a catenary start) is held by it from the first Newton iteration.
+  if (!(delta >= 0.0)) return out;
   out.contact = true;
   const Matrix3d nn = n * n.transpose();
-  const double N = (bed.stiffness * delta - bed.damping * u_dot.dot(n)) * width;
-  // dN/dx = -k_b d n (d delta / dx = -n), dN/du' = -c_b d n.
-  const Vector3d dN_dx = -bed.stiffness * width * n, dN_dv = -bed.damping * width * n;
+  // The damping's share phi rises linearly over the first kDampingDepth d of penetration.
+  const double depth = kDampingDepth * width;
+  const double phi = delta < depth ? delta / depth : 1.0, dphi = delta < depth ? 1.0 / depth : 0.0;
+  const double vn = u_dot.dot(n);
+  const double N = (bed.stiffness * delta - bed.damping * phi * vn) * width;
+  // dN/dx = (-k_b + c_b v_n phi') d n (d delta / dx = -n), dN/du' = -c_b phi d n.
+  const Vector3d dN_dx = (-bed.stiffness + bed.damping * vn * dphi) * width * n,
+                 dN_dv = -bed.damping * phi * width * n;
   out.force = N * n;
   out.d_position = n * dN_dx.transpose();
   out.d_velocity = n * dN_dv.transpose();

@@ -1,8 +1,13 @@
 #pragma once
-// Seabed contact per unit length of a line (MoorDyn v2's convention, hydro.md): where the point
-// is below the bed by delta (measured along the bed's normal n; vertical on a flat bed), a
+// Seabed contact per unit length of a line (MoorDyn v2's convention, docs/theory.md): where the
+// point is below the bed by delta (measured along the bed's normal n; vertical on a flat bed), a
 // spring-damper over the projected width d pushes it out,
-//   N = (k_b delta - c_b u'.n) d,   f_n = N n      (k_b in Pa/m, c_b in Pa s/m)
+//   N = (k_b delta - phi c_b u'.n) d,   f_n = N n      (k_b in Pa/m, c_b in Pa s/m)
+// where the damping's share phi = min(1, delta / (kDampingDepth d)) makes the force continuous as
+// a point touches down (MoorDyn's full c_b from delta = 0 on makes it jump by c_b |u'.n| d, which
+// no Newton iteration can converge across: a chain landing at 0.5 m/s jumps by 15 kN/m). Beyond
+// 1% of the diameter, far less than a chain's resting penetration on any but the stiffest beds,
+// it is MoorDyn's law (the Hunt-Crossley idea of a damping that grows with the penetration).
 // and friction opposes the velocity along the bed, v_t = u' - (u'.n) n, smoothly saturating at
 // mu N:  f_t = -mu max(N, 0) v_t / sqrt(|v_t|^2 + v_s^2). The slip speed v_s sets how soft the
 // law is near rest (MoorDyn's linear damper up to saturation has the same limits: zero at rest,
@@ -13,6 +18,9 @@
 #include "libhydro/seabed/bathymetry.hpp"
 
 namespace flexmoor::hydro {
+
+// The penetration, as a fraction of the line's width, over which the bed's damping comes in.
+inline constexpr double kDampingDepth = 0.01;
 
 struct SeabedProperties {
   double stiffness = 3.0e6;  // k_b, Pa/m (MoorDyn's default kBot)

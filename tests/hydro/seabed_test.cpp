@@ -27,6 +27,18 @@ TEST(SeabedContact, RestingLineIsCarriedAtItsPenetration) {
   EXPECT_EQ(above.force.norm() + above.d_position.norm() + above.d_velocity.norm(), 0.0);
 }
 
+// A line laid exactly on the bed (delta = 0, a catenary start) feels no force but the bed's full
+// stiffness k_b d, so the first Newton step of a static solve sinks it to its penetration
+// w / (k_b d) instead of meeting a singular tangent.
+TEST(SeabedContact, LineExactlyOnTheBedHasTheContactStiffness) {
+  SeabedProperties bed;
+  const double d = 0.1;
+  const SeabedPointLoad on = seabedLoad(bed, 0.0, Vector3d::UnitZ(), d, Vector3d::Zero());
+  EXPECT_TRUE(on.contact);
+  EXPECT_EQ(on.force.norm(), 0.0);
+  EXPECT_NEAR(on.d_position(2, 2), -bed.stiffness * d, 1e-9 * bed.stiffness * d);
+}
+
 // Sliding at U >> v_s the friction is mu N against the motion, to (v_s / U)^2 / 2; at rest it is
 // zero; a vertical velocity feels the bed's damping c_b d, not friction.
 TEST(SeabedContact, SlidingLineIsResistedByMuTimesTheContactForce) {
@@ -67,6 +79,36 @@ TEST(SeabedContact, DerivativesMatchCentralDifferencesOnASlopedBed) {
     EXPECT_LT((L.d_position - dx).cwiseAbs().maxCoeff(), 1e-7 * dx.cwiseAbs().maxCoeff());
     EXPECT_LT((L.d_velocity - dv).cwiseAbs().maxCoeff(), 1e-7 * dv.cwiseAbs().maxCoeff());
   }
+}
+
+// A point touching down at speed: the force grows continuously from zero (MoorDyn's damping from
+// delta = 0 on would jump by c_b |v_n| d), the damping reaching its full c_b over the first
+// kDampingDepth d of penetration, and the derivatives there, in position included (the damping's
+// share depends on delta), match central differences to 1e-7 relative.
+TEST(SeabedContact, LandingLineMeetsAForceThatGrowsContinuously) {
+  const SeabedProperties bed;
+  const double d = 0.1, depth = kDampingDepth * d;
+  const Vector3d landing(0.2, 0.0, -0.5);
+  const auto normal = [&](double delta) {
+    return seabedLoad(bed, delta, Vector3d::UnitZ(), d, landing).force.z();
+  };
+  EXPECT_EQ(normal(0.0), 0.0);
+  EXPECT_NEAR(normal(1e-9), (bed.stiffness + bed.damping * 0.5 / depth) * 1e-9 * d, 1e-18);
+  EXPECT_NEAR(normal(depth), (bed.stiffness * depth + bed.damping * 0.5) * d, 1e-9);
+  EXPECT_NEAR(normal(2 * depth), (bed.stiffness * 2 * depth + bed.damping * 0.5) * d, 1e-9);
+  const Vector3d x(1.0, 2.0, -0.4 * depth);
+  const auto load = [&](const Vector3d& p, const Vector3d& v) {
+    return seabedLoad(bed, -p.z(), Vector3d::UnitZ(), d, v);
+  };
+  const SeabedPointLoad L = load(x, landing);
+  Matrix3d dx, dv;
+  for (int j = 0; j < 3; ++j) {
+    const Vector3d e = 1e-9 * Vector3d::Unit(j);
+    dx.col(j) = (load(x + e, landing).force - load(x - e, landing).force) / 2e-9;
+    dv.col(j) = (load(x, landing + e).force - load(x, landing - e).force) / 2e-9;
+  }
+  EXPECT_LT((L.d_position - dx).cwiseAbs().maxCoeff(), 1e-7 * dx.cwiseAbs().maxCoeff());
+  EXPECT_LT((L.d_velocity - dv).cwiseAbs().maxCoeff(), 1e-7 * dv.cwiseAbs().maxCoeff());
 }
 
 // A grid holding a plane reproduces it exactly (bilinear interpolation is exact for it), with
