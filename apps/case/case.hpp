@@ -157,6 +157,9 @@ struct Case {
   std::optional<SeaOrigin> sea_origin;  // with the sea
   // "FILE:LINE: warning: ..." for what runs but perhaps not as meant (readCase prints them).
   std::vector<std::string> warnings;
+  // "FILE:LINE: note: ..." for the defaults a run chose that the case does not state (a motion's
+  // ramp); the run prints them.
+  std::vector<std::string> notes;
 };
 
 }  // namespace flexmoor::app

@@ -123,6 +123,7 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   diag.throwIfAny();
   buildOcean(b);
   c.warnings = diag.warnings();
+  c.notes = diag.notes();
   for (const std::string& w : c.warnings) std::cerr << "flexmoor: " << w << "\n";
   return c;
 }

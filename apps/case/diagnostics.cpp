@@ -25,6 +25,14 @@ void Diagnostics::error(int line, const std::string& what) {
       {line, line > 0 ? file_ + ":" + std::to_string(line) + ": " + what : file_ + ": " + what});
 }
 
+void Diagnostics::note(int line, const std::string& what) {
+  if (redirect_) return redirect_->note(line, prefix_ + what);
+  std::string text =
+      file_ + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": note: " + what;
+  if (std::find(notes_.begin(), notes_.end(), text) == notes_.end())
+    notes_.push_back(std::move(text));
+}
+
 void Diagnostics::warning(int line, const std::string& what) {
   if (redirect_) return redirect_->warning(line, prefix_ + what);
   warnings_.push_back(file_ + (line > 0 ? ":" + std::to_string(line) : std::string()) +

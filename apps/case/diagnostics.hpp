@@ -36,6 +36,11 @@ class Diagnostics {
   // "FILE:LINE: warning: what", in the order found.
   const std::vector<std::string>& warnings() const { return warnings_; }
 
+  // What a run does that the case does not spell out (a default it chose): "FILE:LINE: note:
+  // what", each text once, in the order found.
+  void note(int line, const std::string& what);
+  const std::vector<std::string>& notes() const { return notes_; }
+
   // Until redirect(nullptr), problems and warnings go to `to` instead, each prefixed with
   // `prefix` (a study's collect: entries, read against a member's case, are the study file's).
   void redirect(Diagnostics* to, std::string prefix = "") {
@@ -59,6 +64,7 @@ class Diagnostics {
   std::string file_;
   std::vector<Problem> problems_;
   std::vector<std::string> warnings_;
+  std::vector<std::string> notes_;
   Diagnostics* redirect_ = nullptr;
   std::string prefix_;
 };

@@ -73,6 +73,22 @@ std::shared_ptr<const model::TimeFunction> readRigidPoint(CaseBuilder& b, Fields
     ok = ok && motions[dof];
   }
   if (!ok) return nullptr;
+  // The motion starts at rest: ramped in over `ramp`, by default one period of its slowest
+  // periodic motion (none for tables and files, which start as their samples say).
+  double slowest = 0.0;
+  for (const auto& m : motions)
+    if (m) slowest = std::max(slowest, m->period());
+  const YAML::Node* r = f.find("ramp");
+  const double ramp = b.in.quantityOr(f, "ramp", kind::kTime, Limit::NonNegative, slowest);
+  if (ramp > 0.0) {
+    for (auto& m : motions)
+      if (m) m = std::make_shared<model::RampedFunction>(m, 0.0, ramp);
+    if (!r)
+      b.diag.note(lineOf(f.node()), "the rigid-body motion is ramped in over " +
+                                        formatNumber(ramp) +
+                                        " s, one period of its slowest motion (ramp: 0 starts it "
+                                        "at full speed)");
+  }
   return std::make_shared<model::RigidPointMotion>(motions, *arm, *component, offset);
 }
 
@@ -85,8 +101,9 @@ std::shared_ptr<const model::TimeFunction> readHistory(CaseBuilder& b, const Map
            : type == "ramp"  ? std::vector<std::string>{"type", "start", "duration"}
            : type == "table" ? std::vector<std::string>{"type", "times", "values"}
            : type == "rigid_point"
-               ? std::vector<std::string>{"type", "arm", "component", "offset", "surge", "sway",
-                                          "heave", "roll", "pitch", "yaw"}
+               ? std::vector<std::string>{"type", "arm",   "component", "offset", "surge",
+                                          "sway", "heave", "roll",      "pitch",  "yaw",
+                                          "ramp"}
                : std::vector<std::string>{"type"});
   const YAML::Node* t = f.require("type");
   if (!t) return nullptr;

@@ -12,7 +12,7 @@ const char* const kMotions[] = {"surge", "sway", "heave", "roll", "pitch", "yaw"
 }  // namespace
 
 std::optional<PlatformMotion> readPlatform(Input& in, const YAML::Node& n) {
-  Fields f(in.diag, n, "platform", {"reference", "surge", "sway", "heave", "roll", "pitch", "yaw"});
+  Fields f(in.diag, n, "platform", {"reference", "surge", "sway", "heave", "roll", "pitch", "yaw", "ramp"});
   PlatformMotion p;
   bool ok = n.IsMap();
   if (const YAML::Node* r = f.find("reference")) {
@@ -27,6 +27,10 @@ std::optional<PlatformMotion> readPlatform(Input& in, const YAML::Node& n) {
                             in.diag.file());
       p.motions[dof] = *m;
     }
+  if (const YAML::Node* r = f.find("ramp")) {
+    ok = ok && in.quantity(*r, f.path("ramp"), kind::kTime, Limit::NonNegative);
+    p.ramp = *r;
+  }
   if (ok && n.IsMap() && !f.find("surge") && !f.find("sway") && !f.find("heave") &&
       !f.find("roll") && !f.find("pitch") && !f.find("yaw")) {
     in.diag.error(n,
@@ -51,6 +55,7 @@ YAML::Node platformPointHistory(const PlatformMotion& p, const Eigen::Vector3d& 
   // to into the tree it is put in, which made 300 lines' histories cost 3 s of reading.
   for (int dof = 0; dof < 6; ++dof)
     if (const auto& m = p.motions[dof]) h[kMotions[dof]] = YAML::Clone(*m);
+  if (p.ramp) h["ramp"] = YAML::Clone(*p.ramp);
   return h;
 }
 

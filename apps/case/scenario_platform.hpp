@@ -9,6 +9,7 @@
 //     pitch: {amplitude: 3 deg, period: 25 s, phase: 0.5}   # roll, pitch, yaw: angles
 //     heave: {table: [[0 s, 0 m], [5 s, 0.4 m], [10 s, 0 m], ...]}
 //     yaw: {file: motion.csv, column: yaw, unit: deg}      # time_column: time (default)
+//     ramp: 10 s     # default: one period of the slowest sine; 0: start at full speed
 //
 // each motion optional: a sine A sin(2 pi t / T + phase), a table of samples or a file of time
 // series (read_motion.hpp: samples become a cubic spline, the velocities and accelerations its
@@ -29,6 +30,7 @@ struct PlatformMotion {
   Eigen::Vector3d reference = Eigen::Vector3d::Zero();
   // surge, sway, heave, roll, pitch, yaw as given (checked), for the histories to read
   std::array<std::optional<YAML::Node>, 6> motions;
+  std::optional<YAML::Node> ramp;  // `ramp:` as given, for the histories to read
 };
 
 // Reads `platform:` (errors at their lines in in.diag; nullopt when wrong).

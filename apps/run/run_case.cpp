@@ -87,6 +87,7 @@ RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
     log << "flexmoor: case " << c.name << " (" << c.file << ")\n  " << m.nodeCount() << " nodes, "
         << m.elementCount() << " elements, " << m.equationCount() << " equations, "
         << c.steps.size() << " steps\n";
+    for (const std::string& note : c.notes) log << "  " << note << "\n";
     try {
       SimulationResult result;
       {  // the file is closed before it is put in place

@@ -33,6 +33,30 @@ double RampFunction::rate(double t) const {
   return (t > start_ && t < start_ + duration_) ? 1.0 / duration_ : 0.0;
 }
 
+RampedFunction::RampedFunction(std::shared_ptr<const TimeFunction> f, double start,
+                               double duration)
+    : f_(std::move(f)), start_(start), duration_(duration) {
+  if (!f_) throw std::invalid_argument("a ramp needs a function to ramp");
+  if (!(duration > 0.0)) throw std::invalid_argument("a ramp needs a positive duration");
+}
+RampedFunction::Smoothstep RampedFunction::ramp(double t) const {
+  const double x = (t - start_) / duration_;
+  if (x <= 0.0) return {0.0, 0.0, 0.0};
+  if (x >= 1.0) return {1.0, 0.0, 0.0};
+  const double x2 = x * x;
+  return {x2 * x * (10.0 - 15.0 * x + 6.0 * x2), 30.0 * x2 * (1.0 - x) * (1.0 - x) / duration_,
+          60.0 * x * (1.0 - x) * (1.0 - 2.0 * x) / (duration_ * duration_)};
+}
+double RampedFunction::value(double t) const { return ramp(t).s * f_->value(t); }
+double RampedFunction::rate(double t) const {
+  const Smoothstep r = ramp(t);
+  return r.ds * f_->value(t) + r.s * f_->rate(t);
+}
+double RampedFunction::acceleration(double t) const {
+  const Smoothstep r = ramp(t);
+  return r.dds * f_->value(t) + 2.0 * r.ds * f_->rate(t) + r.s * f_->acceleration(t);
+}
+
 TableFunction::TableFunction(std::vector<double> times, std::vector<double> values)
     : t_(std::move(times)), f_(std::move(values)) {
   if (t_.empty() || t_.size() != f_.size())

@@ -41,6 +41,29 @@ class RampFunction final : public TimeFunction {
   double start_, duration_;
 };
 
+// A motion brought in smoothly: s(t) f(t), where s rises from 0 at `start` to 1 at start +
+// duration as the quintic smoothstep s = 10 x^3 - 15 x^4 + 6 x^5, x = (t - start) / duration,
+// whose rate and acceleration vanish at both ends, so a prescribed motion that starts at full
+// speed (a platform's sine surge) begins at rest instead of with a jump in velocity. The rate and
+// acceleration follow by the product rule: (s f)' = s' f + s f', (s f)'' = s'' f + 2 s' f' + s f''.
+class RampedFunction final : public TimeFunction {
+ public:
+  RampedFunction(std::shared_ptr<const TimeFunction> f, double start, double duration);
+  double value(double t) const override;
+  double rate(double t) const override;
+  double acceleration(double t) const override;
+  double period() const override { return f_->period(); }
+
+ private:
+  // s and its first and second derivatives at t.
+  struct Smoothstep {
+    double s, ds, dds;
+  };
+  Smoothstep ramp(double t) const;
+  std::shared_ptr<const TimeFunction> f_;
+  double start_, duration_;
+};
+
 // Piecewise linear through (t_i, f_i), constant outside; the acceleration of a piecewise-linear
 // history is zero almost everywhere and is reported as such.
 class TableFunction final : public TimeFunction {

@@ -35,6 +35,7 @@ mooring_lines:
      elements: 20, order: 3}
 platform:
   surge: SURGE
+  ramp: 0 s      # the sine from full speed, as its samples in the table and the file give it
 dynamic: {name: surge, dt: 0.1 s, steps: 200, hht_alpha: -0.1, criterion: displacement,
           load_matrices: iteration}
 summary:

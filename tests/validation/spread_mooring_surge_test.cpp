@@ -89,8 +89,15 @@ TEST(SpreadMooringSurge, FairleadsFollowTheSurgeAndTensionsFollowItsVelocity) {
   const double run_cpu = childrenCpuSeconds() - children_before;  // the flexmoor process's
   const double w = 2.0 * std::acos(-1.0) / 10.0;
   // The prescribed motion is set exactly at every accepted state: round-off, 1e-12 m/s and
-  // 1e-9 m on positions of 40 m (the time a sum of some 200 steps, a few halved).
-  EXPECT_NEAR(summaryValue(json, "vx_a"), 2.0 * w * std::cos(w * 1.3), 1e-12);
+  // 1e-9 m on positions of 40 m (the time a sum of some 200 steps, a few halved). The surge is
+  // ramped in over its period (the default): s(t) 2 sin(w t) with the quintic smoothstep
+  // s = 10 x^3 - 15 x^4 + 6 x^5, x = t / 10 s, so at 1.3 s the velocity is
+  // s' 2 sin(w t) + s 2 w cos(w t), s' = 30 x^2 (1 - x)^2 / 10 s, and the bare sine's after 10 s.
+  const double x = 0.13, s = x * x * x * (10.0 - 15.0 * x + 6.0 * x * x);
+  const double ds = 30.0 * x * x * (1.0 - x) * (1.0 - x) / 10.0;
+  EXPECT_NEAR(summaryValue(json, "vx_a"),
+              ds * 2.0 * std::sin(w * 1.3) + s * 2.0 * w * std::cos(w * 1.3), 1e-12);
+  EXPECT_LT(summaryValue(json, "vx_a"), 0.1 * 2.0 * w * std::cos(w * 1.3));  // not the bare sine
   EXPECT_NEAR(summaryValue(json, "vx_b"), 2.0 * w * std::cos(w * 14.1), 1e-12);
   EXPECT_NEAR(summaryValue(json, "vy_b"), 0.0, 1e-12);
   EXPECT_NEAR(summaryValue(json, "vz_b"), 0.0, 1e-12);
@@ -116,10 +123,10 @@ TEST(SpreadMooringSurge, FairleadsFollowTheSurgeAndTensionsFollowItsVelocity) {
     EXPECT_NEAR(summaryValue(json, k) / rest - 1.0, 0.0, 5e-4) << k;
   for (int k = 1; k <= 3; ++k) {
     const std::string n = std::to_string(k);
-    // Mean over the second period against the static catenary: measured -9.4e-4 (lines 1, 3)
-    // and -4.7e-3 (line 2; the start's transient, the fairlead set moving at 1.26 m/s while the
-    // line is at rest, is still decaying; 20 L3 gave -2.0e-4 and -3.6e-3), held to 5e-3.
-    EXPECT_NEAR(summaryValue(json, "mean_" + n) / rest, 1.0, 5e-3) << "line " << k;
+    // Mean over the second period (the first after the ramp) against the static catenary:
+    // measured -5.1e-3 at most (line 2, the nonlinear response's mean drift and what is left of
+    // the ramp's transient), held to 6e-3.
+    EXPECT_NEAR(summaryValue(json, "mean_" + n) / rest, 1.0, 6e-3) << "line " << k;
     // Measured: line 2 1.40e6 N and 0.80e6 N, lines 1 and 3 1.01e6 N and 1.21e6 N, against the
     // rest's 1.105e6 N: 8.5% of it at least; held to 5% of it, with the sign.
     const double sign = k == 2 ? 1.0 : -1.0;
