@@ -69,9 +69,18 @@ void readNewton(CaseBuilder& b, Fields& f, int& stiffness_update, int& max_itera
   }
 }
 
+// `waves: still | frozen` of a static or relax step: whether its loads see still water (the
+// default) or the waves frozen as they stand at the step's time.
+void readWaves(CaseBuilder& b, Fields& f, bool& frozen) {
+  if (const YAML::Node* n = f.find("waves"))
+    frozen = b.in.choice<bool>(*n, f.path("waves"), {{"still", false}, {"frozen", true}})
+                 .value_or(frozen);
+}
+
 // Viscous relaxation, Appendix C.
 void readRelax(CaseBuilder& b, Fields& f, solve::RelaxationOptions& o) {
   Input& in = b.in;
+  readWaves(b, f, o.frozen_waves);
   o.load_factor = in.quantityOr(f, "load_factor", kind::kNumber, Limit::Any, o.load_factor);
   o.tolerance = in.quantityOr(f, "tolerance", kind::kNumber, Limit::Positive, o.tolerance);  // C.15
   // C of Eq. C.11 multiplies a displacement over one unit of pseudo-time: a force per length.
@@ -88,6 +97,7 @@ void readRelax(CaseBuilder& b, Fields& f, solve::RelaxationOptions& o) {
 // Incremental Newton, modified Newton or BFGS, under load or arc-length control.
 void readStatic(CaseBuilder& b, Fields& f, solve::StaticOptions& o) {
   Input& in = b.in;
+  readWaves(b, f, o.frozen_waves);
   o.load_factor = in.quantityOr(f, "load_factor", kind::kNumber, Limit::Any, o.load_factor);
   o.increments = in.integerOr(f, "increments", 1, o.increments);
   if (const YAML::Node* n = f.find("control"))
@@ -303,10 +313,10 @@ const std::vector<std::string>& keysOf(StepSpec::Kind kind) {
   };
   static const std::vector<std::string> relax = {
       "name",      "load_factor",        "tolerance", "damping",        "initial_damping_factor",
-      "decrement", "residual_tolerance", "max_steps", "max_iterations", "release"};
+      "decrement", "residual_tolerance", "max_steps", "max_iterations", "release", "waves"};
   static const std::vector<std::string> statics =
       with({"name", "load_factor", "increments", "control", "psi", "desired_iterations",
-            "max_increments", "pressure_stiffness", "release"});
+            "max_increments", "pressure_stiffness", "release", "waves"});
   static const std::vector<std::string> modes = {"name", "count",     "shift",
                                                  "mass", "tolerance", "release"};
   static const std::vector<std::string> dynamic =

@@ -8,7 +8,10 @@ namespace flexmoor::hydro {
 MorisonLineLoad::MorisonLineLoad(std::shared_ptr<const Sea> sea,
                                  std::vector<std::optional<MorisonCoefficients>> sections,
                                  model::LengthMeasure measure)
-    : sea_(std::move(sea)), sections_(std::move(sections)), measure_(measure) {}
+    : sea_(std::move(sea)),
+      still_(std::make_shared<const Sea>(sea_->stillWater())),
+      sections_(std::move(sections)),
+      measure_(measure) {}
 
 // Per deformed length (Eq. E.1) or, for LengthMeasure::Reference, the same force values per
 // unstretched length as MoorDyn applies them: the element integrates over the length the
@@ -18,9 +21,10 @@ model::PointForce MorisonLineLoad::evaluate(const model::LoadPoint& p, bool jaco
   if (p.element < 0 || p.element >= static_cast<int>(sections_.size()) || !sections_[p.element])
     return out;
   FluidGradient g;
-  const FluidPoint fluid = held_       ? held_->at(p.element, p.position, p.time, g)
-                           : jacobians ? sea_->at(p.position, p.time, g)
-                                       : sea_->at(p.position, p.time);
+  const Sea& sea = p.still ? *still_ : *sea_;
+  const FluidPoint fluid = held_ && !p.still ? held_->at(p.element, p.position, p.time, g)
+                           : jacobians       ? sea.at(p.position, p.time, g)
+                                             : sea.at(p.position, p.time);
   if (!fluid.wet) return out;  // above the local surface: nothing (a line may pierce it)
   const MorisonCoefficients& c = *sections_[p.element];
   const Water& water = sea_->water();

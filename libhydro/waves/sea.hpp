@@ -61,6 +61,14 @@ class Sea {
   void setSurfaceKinematics(SurfaceKinematics k) { surface_ = k; }
 
   const Water& water() const { return water_; }
+  // The same water and current without waves: what a static solve's loads see (still water,
+  // as MoorDyn, MAP++ and OrcaFlex take their statics).
+  Sea stillWater() const {
+    Sea still(water_);
+    still.current_ = current_;
+    still.surface_ = surface_;
+    return still;
+  }
   const std::vector<WaveComponent>& components() const { return components_; }
 
   double elevation(const Eigen::Vector3d& x, double t) const;

@@ -14,6 +14,7 @@ model::LoadPoint interpolatedPoint(const ElementContext& c, const Nodal& Y, cons
   point.velocity = V * N;
   point.acceleration = A * N;
   point.time = c.state.time;
+  point.still = c.state.still;
   point.element = c.index;
   return point;
 }

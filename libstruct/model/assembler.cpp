@@ -54,6 +54,29 @@ Assembler::Assembler(const Model& model) : model_(model) {
   pattern_.resize(n_eq, n_eq);
   pattern_.setFromTriplets(entries.begin(), entries.end());
   pattern_.makeCompressed();
+  double sizes = 0.0;
+  int sized = 0;
+  for (int e = 0; e < model.elementCount(); ++e) {
+    const std::vector<int>& nodes = model.element(e).nodes();
+    double largest = 0.0;
+    for (size_t a = 0; a < nodes.size(); ++a)
+      for (size_t b = a + 1; b < nodes.size(); ++b)
+        largest = std::max(
+            largest, (model.reference().col(nodes[a]) - model.reference().col(nodes[b])).norm());
+    if (largest > 0.0) {
+      sizes += largest;
+      ++sized;
+    }
+  }
+  if (sized > 0) element_size_ = sizes / sized;
+  if (!model.gravity().isZero()) {
+    Eigen::VectorXd weight = Eigen::VectorXd::Zero(3 * model.nodeCount());
+    const std::vector<Eigen::MatrixXd> masses = elementMasses(element::MassKind::Lumped);
+    for (int e = 0; e < model.elementCount(); ++e)
+      for (size_t a = 0; a < full_index_[e].size(); ++a)
+        weight(full_index_[e][a]) += masses[e](a, a) * model.gravity()(full_index_[e][a] % 3);
+    weight_norm_ = weight.norm();
+  }
 
   for (int e = 0; e < model.elementCount(); ++e)
     slot_.push_back(blockSlots(pattern_, equations[e]));
@@ -240,6 +263,7 @@ LoadPoint Assembler::nodePoint(const State& state, int node) const {
   p.velocity = state.velocity.col(node);
   p.acceleration = state.acceleration.col(node);
   p.time = state.time;
+  p.still = state.still;
   p.node = node;
   return p;
 }

@@ -43,6 +43,14 @@ class Assembler {
 
   const Model& model() const { return model_; }
   int equationCount() const { return model_.equationCount(); }
+  // The model's mean element size: over its elements of two nodes or more, the mean of the
+  // largest distance between two of an element's nodes in the reference configuration (1 when
+  // there is none). The length a Newton increment is measured against (equilibrium.hpp).
+  double elementSize() const { return element_size_; }
+  // |W|, the norm of the model's weight at load factor 1 (the lumped masses times gravity): a
+  // force in play even where the loads cancel at every node (a line resting on the seabed, whose
+  // weight, buoyancy and bed reaction sum to nothing), so a residual is measured against it too.
+  double weightNorm() const { return weight_norm_; }
   const SparseMatrix& pattern() const { return pattern_; }
 
   // Internal force F(u) as a full vector; with K, also the tangent on the free dofs (Eq. 4.48).
@@ -108,6 +116,8 @@ class Assembler {
                std::vector<element::ElementResult>& elements, NodalField& reactions) const;
 
  private:
+  double element_size_ = 1.0;
+  double weight_norm_ = 0.0;
   element::ElementContext context(const State& state, int e) const {
     return {model_.reference(), state, e};
   }

@@ -21,6 +21,9 @@ struct LoadPoint {
   Eigen::Vector3d tangent = Eigen::Vector3d::Zero();
   double stretch = 1.0;  // line points: current length / reference length
   double time = 0.0;
+  // A static solve's point: loads that vary in time as an excitation (waves) leave it out and
+  // keep their steady part (gravity, buoyancy, current, the seabed); State::still.
+  bool still = false;
   int element = -1;  // line and surface points: the element's index in the model
   int node = -1;     // node points: the node's index
 };

@@ -30,6 +30,8 @@ struct State {
   NodalField acceleration;
   double time = 0.0;
   double load_factor = 0.0;
+  // The state of a static solve (putAtRest): the loads see still water, no waves (LoadPoint).
+  bool still = false;
   MotionRecord motion;
 
   explicit State(int node_count = 0)
@@ -55,6 +57,7 @@ inline bool sameDisplacement(const State& a, const State& b) {
 // load factor equal, exactly (the motion record aside).
 inline bool sameState(const State& a, const State& b) {
   return sameDisplacement(a, b) && a.time == b.time && a.load_factor == b.load_factor &&
+         a.still == b.still &&
          sameBits(a.velocity, b.velocity) && sameBits(a.acceleration, b.acceleration);
 }
 

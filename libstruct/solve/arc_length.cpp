@@ -40,15 +40,15 @@ class ArcLengthPath {
     apply(state, u0, du_total, lambda0 + dlambda);
     trace_.start();
     trace_.increment(a_.model(), du_total);
+    IterateNorms norms;
     for (int it = 1; it <= o_.max_iterations; ++it) {
       VectorXd R;
       const bool solved = tangentSolve(state, &R, P, dut);
       trace_.residual(residual_norm_);
       if (!solved) return false;
-      rec.residual_norm = residual_norm_;
-      if (it > 1 &&
-          converged(o_.convergence, rec.displacement_norm, rec.residual_norm, residual_floor_))
-        return true;
+      rec.residual_norm = norms.residual = residual_norm_;
+      norms.residual_floor = residual_floor_;
+      if (it > 1 && converged(o_.convergence, norms)) return true;
       const VectorXd duR = linear_.solve(R);
       // |du_total + duR + x dut|^2 + psi^2 (dlambda + x)^2 |P|^2 = ds^2
       const double psi2 = o_.arc.psi * o_.arc.psi * P.squaredNorm();
@@ -69,7 +69,8 @@ class ArcLengthPath {
       apply(state, u0, du_total, lambda0 + dlambda);
       rec.iteration = it;
       rec.load_factor = state.load_factor;
-      rec.displacement_norm = displacementNorm(a_, du, state.displacement);
+      incrementNorm(a_, du, state.displacement, norms);
+      rec.displacement_norm = norms.displacement;
     }
     return false;
   }

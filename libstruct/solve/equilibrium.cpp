@@ -22,7 +22,7 @@ void outOfBalance(const model::Assembler& assembler, const model::State& state,
   assembler.externalLoad(state, P, J);
   scratch.difference = P - F;
   assembler.restrictToFree(scratch.difference, r.free);
-  r.scale = std::max(P.norm(), F.norm());
+  r.scale = std::max({P.norm(), F.norm(), std::abs(state.load_factor) * assembler.weightNorm()});
   r.floor = 0.0;
   if (K && K->rows() > 0 && r.scale > 0.0) {
     const auto x = assembler.model().reference() + state.displacement;  // not materialised
@@ -42,22 +42,31 @@ Residual staticOutOfBalance(const model::Assembler& assembler, const model::Stat
   return r;
 }
 
-bool converged(const Convergence& c, double displacement_norm, double residual_norm,
-               double residual_floor) {
-  const bool displacement_ok = !c.use_displacement || displacement_norm < c.displacement_tolerance;
+bool acceptable(double residual_norm, double residual_floor) {
+  return residual_norm <= std::max(kAcceptedResidual, std::min(residual_floor, kFloorLimit));
+}
+
+bool converged(const Convergence& c, const IterateNorms& n) {
+  const bool displacement_ok =
+      !c.use_displacement ||
+      n.displacement < std::max(c.displacement_tolerance, n.displacement_floor);
   const bool residual_ok =
       !c.use_residual ||
-      residual_norm < std::max(c.residual_tolerance, std::min(residual_floor, kFloorLimit));
-  return displacement_ok && residual_ok;
+      n.residual < std::max(c.residual_tolerance, std::min(n.residual_floor, kFloorLimit));
+  return displacement_ok && residual_ok && acceptable(n.residual, n.residual_floor);
 }
 
-double displacementNorm(const model::Assembler& assembler, const Eigen::VectorXd& du,
-                        const model::NodalField& u) {
-  const double u_norm = assembler.restrictToFree(asVector(u)).norm();
-  return u_norm > 0.0 ? du.norm() / u_norm : du.norm();
+void incrementNorm(const model::Assembler& assembler, const Eigen::VectorXd& du,
+                   const model::NodalField& u, IterateNorms& norms) {
+  const double L = assembler.elementSize();
+  norms.displacement = du.size() > 0 ? du.cwiseAbs().maxCoeff() / L : 0.0;
+  const auto x = assembler.model().reference() + u;  // not materialised
+  const double largest = x.size() > 0 ? x.cwiseAbs().maxCoeff() : 0.0;
+  norms.displacement_floor = 8.0 * std::numeric_limits<double>::epsilon() * largest / L;
 }
 
-void putAtRest(model::State& state) {
+void putAtRest(model::State& state, bool frozen_waves) {
+  state.still = !frozen_waves;
   state.velocity.setZero();
   state.acceleration.setZero();
   state.motion = {};

@@ -11,17 +11,30 @@ enum class NewtonFlavour {
   SelfCorrective,  // Eq. 4.20: one solve per increment (or time step) with the tangent and the
                    // full residual of its start, accepted without iterating; what is left out of
                    // balance is carried into the next increment and corrected there, so the error
-                   // stays that of one Newton step, O(increment^2). Its residual is reported, not
-                   // tested.
+                   // stays that of one Newton step, O(increment^2). An increment or time step is
+                   // accepted only while that residual stays below kAcceptedResidual; a static
+                   // solve's last increment is corrected until it converges.
 };
 
-// Convergence (Eq. 5.1): sqrt(sum du^2 / sum u^2) < displacement_tolerance, and/or
-// |R| < residual_tolerance * max(|P|, |F|) over the free dofs.
+// When the Newton iterations of a solve have converged, the one test of every solver: statics in
+// each flavour, arc length, viscous relaxation's pseudo-time steps and time steps
+// (equilibrium.hpp, converged()). Eq. 5.1, each norm measured against a scale that means
+// something for the model at hand:
+//  - residual: |R| over the free dofs against the largest force in play S (internal, external
+//    and, in a time step, inertial: Residual::scale), never asking for less than round-off leaves
+//    of it (Residual::floor);
+//  - displacement: the Newton increment's largest component, max |du_i|, against the model's
+//    mean element size L (Assembler::elementSize), never asking for less than round-off leaves
+//    of the coordinates. (Against the total displacement, as Eq. 5.1 reads, a line hanging 600 m
+//    from its straight reference passes after one iteration: strict-looking and loose.)
+// use_residual alone ends the iterations on the first, use_displacement alone on the second,
+// both (the default) on both. Whichever ends them, a state whose residual is above
+// kAcceptedResidual of S is never taken for an equilibrium (equilibrium.hpp).
 struct Convergence {
   bool use_displacement = true;
   bool use_residual = true;
-  double displacement_tolerance = 1e-6;
-  double residual_tolerance = 1e-8;
+  double displacement_tolerance = 1e-6;  // max |du_i| / L
+  double residual_tolerance = 1e-8;      // |R| / S
 };
 
 // Arc-length continuation (Crisfield): the load factor becomes an unknown and each increment is
@@ -50,6 +63,9 @@ struct StaticOptions {
   // Follower pressure: with the consistent load stiffness dP/du (non-symmetric, UMFPACK), or, as
   // the dissertation does (Eq. 4.41), without it, iterating on the symmetric tangent alone.
   bool pressure_load_stiffness = false;
+  // The loads see still water (gravity, buoyancy, current; no waves), unless the waves are
+  // frozen as they stand at the state's time.
+  bool frozen_waves = false;
 };
 
 // Viscous relaxation (Appendix C): D u' + F(u) = P with D = C I, implicit steps of unit
@@ -63,6 +79,7 @@ struct RelaxationOptions {
   double residual_tolerance = 1e-8;      // equilibrium check: |R| < tol * max(|P|, |F|)
   int max_steps = 500;
   int max_iterations = 30;  // Newton iterations inside one pseudo-time step
+  bool frozen_waves = false;  // as StaticOptions
 };
 
 }  // namespace flexmoor::solve
@@ -101,10 +118,12 @@ struct DynamicOptions {
   double rayleigh_stiffness = 0.0;
   int max_step_cuts = 6;  // a failed step is halved, at most this many times
   // The motion-dependent loads' stiffness, damping and added mass in the effective tangent
-  // (non-symmetric: LU): evaluated at the first iteration of every step, at every iteration, or
-  // never (their forces stay in the residual; only to measure what the matrices are worth).
+  // (non-symmetric: LU): evaluated at every iteration (the default: Newton stays quadratic when a
+  // point touches down on the seabed within the step), at the first iteration of every step
+  // only, or never (their forces stay in the residual; only to measure what the matrices are
+  // worth).
   enum class LoadMatrixUpdate { Step, Iteration, Off };
-  LoadMatrixUpdate load_matrices = LoadMatrixUpdate::Step;
+  LoadMatrixUpdate load_matrices = LoadMatrixUpdate::Iteration;
   // Follower pressure: its load stiffness dP/du in the tangent (non-symmetric, LU), as in statics.
   bool pressure_load_stiffness = false;
 };

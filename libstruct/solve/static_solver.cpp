@@ -1,5 +1,6 @@
 #include "libstruct/solve/static_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -8,6 +9,7 @@
 #include "libstruct/solve/diagnosis.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
+#include "libstruct/solve/viscous_relaxation.hpp"
 
 namespace flexmoor::solve {
 namespace {
@@ -59,82 +61,168 @@ bool factorizeRegularised(LinearSolver& linear, model::SparseMatrix& K, const So
   return linear.factorize(K);
 }
 
+// The Newton iterations of one increment at the state's load factor.
+class IncrementSolve {
+ public:
+  IncrementSolve(const model::Assembler& a, const StaticOptions& o, const SolveLog& log)
+      : a_(a),
+        o_(o),
+        log_(log),
+        linear_(o.pressure_load_stiffness || a.model().hasMotionLoads()
+                    ? MatrixKind::Unsymmetric
+                    : MatrixKind::Symmetric) {}
+
+  // Iterates from `state` until the Convergence test holds; a self-corrective increment that
+  // `carries` its residual (Eq. 4.20: one that is not the last) is accepted after one solve. False
+  // when the iterations end without it; throws ConvergenceError on a singular tangent.
+  bool run(model::State& state, bool carries, IterationRecord& rec) {
+    trace_.start();
+    regularised_ = false;
+    updates_ = 0;
+    IterateNorms norms;
+    Backtracking backtracking;
+    Eigen::VectorXd du, previous_residual;
+    for (int it = 0; it <= o_.max_iterations; ++it) {
+      const bool update = o_.flavour == NewtonFlavour::Full || it == 0 ||
+                          it % std::max(1, o_.stiffness_update) == 0;
+      const Residual R = staticOutOfBalance(a_, state, update ? &K_ : nullptr);
+      rec.residual_norm = norms.residual = R.relative();
+      trace_.residual(rec.residual_norm);
+      if (update) floor_ = R.floor;
+      norms.residual_floor = floor_;
+      if (it > 0) log_.report(rec);
+      if (it > 0 && (carries || converged(o_.convergence, norms))) return true;
+      if (it == o_.max_iterations) return false;
+      if (backtracking.halve(it, rec.residual_norm)) {  // du halved: half of it taken back
+        du *= 0.5;
+        a_.addFree(-du, state.displacement);
+        incrementNorm(a_, du, state.displacement, norms);
+        rec.displacement_norm = norms.displacement;
+        continue;
+      }
+      if (!std::isfinite(rec.residual_norm)) return false;
+      if (o_.flavour == NewtonFlavour::Bfgs && it > 0) bfgs_.add(du, previous_residual - R.free);
+      if (update) {
+        ++updates_;
+        if (o_.pressure_load_stiffness) a_.subtractLoadStiffness(state, K_);
+        if (!factorizeRegularised(linear_, K_, log_, regularised_))
+          throw ConvergenceError(
+              failure(o_, rec, "has a singular tangent",
+                      "a mechanism: a free motion that no support or stiffness holds, loaded"),
+              rec);
+        bfgs_.reset();
+      }
+      du = o_.flavour == NewtonFlavour::Bfgs ? bfgs_.apply(R.free, linear_) : linear_.solve(R.free);
+      previous_residual = R.free;
+      trace_.increment(a_.model(), du);
+      a_.addFree(du, state.displacement);
+      rec.iteration = it + 1;
+      incrementNorm(a_, du, state.displacement, norms);
+      rec.displacement_norm = norms.displacement;
+    }
+    return false;
+  }
+
+  const NewtonTrace& trace() const { return trace_; }
+  bool regularised() const { return regularised_; }
+  int updates() const { return updates_; }
+
+ private:
+  const model::Assembler& a_;
+  const StaticOptions& o_;
+  const SolveLog& log_;
+  LinearSolver linear_;
+  model::SparseMatrix K_;
+  BfgsUpdates bfgs_;
+  NewtonTrace trace_;
+  double floor_ = 0.0;  // round-off floor of the residual at the last tangent
+  bool regularised_ = false;
+  int updates_ = 0;
+};
+
 }  // namespace
 
 StaticReport solveStatic(const model::Assembler& assembler, model::State& state,
                          const StaticOptions& options, const SolveLog& log) {
-  putAtRest(state);
+  putAtRest(state, options.frozen_waves);
   if (options.control == LoadControl::ArcLength)
     return solveArcLength(assembler, state, options, log);
   StaticReport report;
-  LinearSolver linear(options.pressure_load_stiffness || assembler.model().hasMotionLoads()
-                          ? MatrixKind::Unsymmetric
-                          : MatrixKind::Symmetric);
-  model::SparseMatrix K;
-  BfgsUpdates bfgs;
-  double floor = 0.0;  // round-off floor of the residual at the last tangent
+  IncrementSolve solve(assembler, options, log);
   const double start = state.load_factor;
   for (int inc = 1; inc <= options.increments; ++inc) {
     const model::State converged_state = state;
     state.load_factor = start + (options.load_factor - start) * inc / options.increments;
     assembler.applyPrescribed(state);
-    putAtRest(state);
+    putAtRest(state, options.frozen_waves);
     IterationRecord rec{inc, 0, state.load_factor, 0.0, 0.0};
-    int updates = 0;
+    const bool carries =
+        options.flavour == NewtonFlavour::SelfCorrective && inc < options.increments;
     bool done = false;
-    Eigen::VectorXd du, previous_residual;
-    NewtonTrace trace;
-    bool regularised = false;  // a tangent of this increment was singular
-    for (int it = 0; it <= options.max_iterations; ++it) {
-      const bool update = options.flavour == NewtonFlavour::Full || it == 0 ||
-                          it % std::max(1, options.stiffness_update) == 0;
-      const Residual R = staticOutOfBalance(assembler, state, update ? &K : nullptr);
-      rec.residual_norm = R.relative();
-      trace.residual(rec.residual_norm);
-      if (update) floor = R.floor;
-      if (options.flavour == NewtonFlavour::Bfgs && it > 0)
-        bfgs.add(du, previous_residual - R.free);
-      if (it > 0) log.report(rec);
-      const bool self_corrective = options.flavour == NewtonFlavour::SelfCorrective;
-      if (it > 0 && (self_corrective || converged(options.convergence, rec.displacement_norm,
-                                                  rec.residual_norm, floor))) {
-        done = true;
-        break;
-      }
-      if (!std::isfinite(rec.residual_norm) || it == options.max_iterations) break;
-      if (update) {
-        ++updates;
-        if (options.pressure_load_stiffness) assembler.subtractLoadStiffness(state, K);
-        if (!factorizeRegularised(linear, K, log, regularised)) {
-          state = converged_state;
-          throw ConvergenceError(
-              failure(options, rec, "has a singular tangent",
-                      "a mechanism: a free motion that no support or stiffness holds, loaded"),
-              rec);
-        }
-        bfgs.reset();
-      }
-      du = options.flavour == NewtonFlavour::Bfgs ? bfgs.apply(R.free, linear)
-                                                  : linear.solve(R.free);
-      previous_residual = R.free;
-      trace.increment(assembler.model(), du);
-      assembler.addFree(du, state.displacement);
-      rec.iteration = it + 1;
-      rec.displacement_norm = displacementNorm(assembler, du, state.displacement);
-    }
-    if (!done) {
+    try {
+      done = solve.run(state, carries, rec);
+    } catch (const ConvergenceError&) {
       state = converged_state;
-      throw ConvergenceError(
-          failure(options, rec, "did not converge",
-                  divergence(trace, log, converged_state.load_factor, regularised)),
-          rec);
+      throw;
     }
-    report.increments.push_back(
-        {inc, state.load_factor, rec.iteration, updates, rec.displacement_norm, rec.residual_norm});
+    std::string how;
+    if (!done) {
+      // Newton got nowhere from this start (a slack cable starting straight, a line that must
+      // first find the seabed): viscous relaxation (Appendix C) from the same start, its damping
+      // at first the tangent's mean diagonal and falling as the motion settles, then Newton's
+      // iterations to the Convergence test.
+      const NewtonTrace newton = solve.trace();
+      const IterationRecord newton_rec = rec;
+      const bool newton_singular = solve.regularised();
+      std::ostringstream s;
+      s << "increment " << inc << ": Newton did not converge in " << rec.iteration
+        << " iterations (residual " << rec.residual_norm
+        << "); relaxing from the start instead (viscous relaxation, then Newton)";
+      log.say(s.str());
+      state = converged_state;
+      RelaxationOptions relaxation;
+      relaxation.load_factor = newton_rec.load_factor;
+      relaxation.frozen_waves = options.frozen_waves;
+      relaxation.residual_tolerance = std::max(options.convergence.residual_tolerance, 1e-8);
+      {
+        model::State start = state;
+        start.load_factor = relaxation.load_factor;
+        assembler.applyPrescribed(start);
+        model::SparseMatrix K;
+        staticOutOfBalance(assembler, start, &K);
+        relaxation.damping = K.rows() > 0 ? K.diagonal().cwiseAbs().mean() : 1.0;
+      }
+      try {
+        const RelaxationReport relaxed = relax(assembler, state, relaxation, log);
+        rec = {inc, 0, state.load_factor, 0.0, 0.0};
+        done = solve.run(state, false, rec);
+        how = " after " + std::to_string(relaxed.steps) + " steps of viscous relaxation";
+      } catch (const ConvergenceError& e) {
+        state = converged_state;
+        throw ConvergenceError(
+            failure(options, newton_rec, "did not converge",
+                    divergence(newton, log, converged_state.load_factor, newton_singular) +
+                        "; viscous relaxation from the start did not settle either (" + e.what() +
+                        ")"),
+            newton_rec);
+      }
+      if (!done) {
+        state = converged_state;
+        throw ConvergenceError(
+            failure(options, newton_rec, "did not converge",
+                    divergence(newton, log, converged_state.load_factor, newton_singular) +
+                        "; viscous relaxation from the start ended where Newton did not "
+                        "converge either (" +
+                        solve.trace().diagnosis(log) + ")"),
+            newton_rec);
+      }
+    }
+    report.increments.push_back({inc, state.load_factor, rec.iteration, solve.updates(),
+                                 rec.displacement_norm, rec.residual_norm});
     std::ostringstream s;
     s << "increment " << inc << "/" << options.increments << "  load factor " << state.load_factor
-      << "  iterations " << rec.iteration << "  |du|/|u| " << rec.displacement_norm << "  |R|/|P| "
-      << rec.residual_norm;
+      << "  iterations " << rec.iteration << how << "  max|du|/L " << rec.displacement_norm
+      << "  |R|/S " << rec.residual_norm;
     log.say(s.str());
   }
   return report;

@@ -156,6 +156,7 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   model::State& next = scratch_.next;
   next = s;
   next.time = s.time + h;
+  if (std::abs(next.time - end_time_) <= 1e-9 * h) next.time = end_time_;  // not a rounded sum
   applySupports(next, s, h);
   // Predictor: the motion continued at its last velocity, u_n + h u'_n, which starts Newton
   // closer than u_n does (OC4's surge: a quarter fewer iterations). Not with the acceleration
@@ -168,8 +169,8 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   trace_.start();
   singular_ = false;
   VectorXd& du = scratch_.increment;  // the last increment taken
-  double previous_residual = 0.0;     // the residual before it
-  int backtracks = 0;                 // halvings of the last Newton increment so far
+  Backtracking backtracking;
+  IterateNorms norms;
   VectorXd &acc = scratch_.acceleration, &v = scratch_.velocity;
   VectorXd &balance_here = scratch_.balance_here, &inertia_full = scratch_.inertia;
   Residual& R = scratch_.residual;
@@ -192,10 +193,14 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
     const double scale = std::max({R.scale, inertia_full.norm(), force_scale_});
     if (tangent) floor_ = R.floor * R.scale / scale;
     R.scale = scale;
-    rec.residual_norm = R.relative();
+    rec.residual_norm = norms.residual = R.relative();
+    norms.residual_floor = floor_;
     trace_.residual(rec.residual_norm);
-    if (it > 0 && (self_corrective ||  // Eq. 4.20: one solve, accepted
-                   converged(o_.convergence, rec.displacement_norm, rec.residual_norm, floor_))) {
+    // Eq. 4.20: the self-corrective scheme's one solve is accepted, its residual carried into the
+    // next step, while that residual stays acceptable (a step it throws further out of balance
+    // is cut like any other that fails).
+    if (it > 0 && (self_corrective ? acceptable(norms.residual, norms.residual_floor)
+                                   : converged(o_.convergence, norms))) {
       force_scale_ = R.scale;
       s = next;
       steps_since_update_ = refresh_each_step ? 0 : steps_since_update_ + 1;
@@ -208,25 +213,18 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
       kept_.balance = balance_here;
       return true;
     }
-    if (it == o_.max_iterations) return false;
-    // Backtracking: a Newton increment after the first that raised the residual (or made it
-    // non-finite) is halved, up to kMaxBacktracks times, before Newton goes on from there. A
-    // kink in the loads (a point of a line touching the seabed, a slack line) otherwise makes
-    // full Newton cycle between the two sides of it, and the step is cut in vain.
-    constexpr int kMaxBacktracks = 4;
-    const bool worse = !std::isfinite(rec.residual_norm) || rec.residual_norm > previous_residual;
-    if (it >= 2 && !self_corrective && worse && backtracks < kMaxBacktracks) {
+    if (it == o_.max_iterations || (self_corrective && it > 0)) return false;
+    // Backtracking (equilibrium.hpp): without it a kink in the loads makes full Newton cycle
+    // between its two sides, and the step is cut in vain.
+    if (backtracking.halve(it, rec.residual_norm)) {
       du *= 0.5;
       u -= du;
-      ++backtracks;
       ++report_.backtracks;
-      const double u_norm = u.norm();
-      rec.displacement_norm = u_norm > 0.0 ? du.norm() / u_norm : du.norm();
+      incrementNorm(assembler_, du, next.displacement, norms);
+      rec.displacement_norm = norms.displacement;
       continue;
     }
     if (!std::isfinite(rec.residual_norm)) return false;
-    backtracks = 0;
-    previous_residual = rec.residual_norm;
     const bool new_matrices = it == 0 ? refresh_each_step || motion_loads_ : tangent || loads;
     if (new_matrices) {
       factorEffectiveTangent(h);
@@ -237,8 +235,8 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
     trace_.increment(model_, du);
     ++report_.iterations;
     rec.iteration = it + 1;
-    const double u_norm = u.norm();
-    rec.displacement_norm = u_norm > 0.0 ? du.norm() / u_norm : du.norm();  // Eq. 5.1
+    incrementNorm(assembler_, du, next.displacement, norms);
+    rec.displacement_norm = norms.displacement;
   }
   return false;
 }
@@ -277,6 +275,13 @@ void TimeIntegrator::advance(model::State& s, double h, int depth,
 
 void TimeIntegrator::step(model::State& s, double dt,
                           const std::function<void(const model::State&)>& on_step) {
+  stepTo(s, s.time + dt, on_step);
+}
+
+void TimeIntegrator::stepTo(model::State& s, double t_end,
+                            const std::function<void(const model::State&)>& on_step) {
+  const double dt = t_end - s.time;
+  end_time_ = t_end;
   for (auto& [dof, t] : targets_) {
     t.start_u = s.displacement(dof.second, dof.first);
     t.start_v = s.velocity(dof.second, dof.first);
@@ -322,6 +327,7 @@ void TimeIntegrator::initialAcceleration(model::State& s) {
 
 void TimeIntegrator::start(model::State& s) {
   kept_.valid = false;
+  s.still = false;  // the waves act again
   if (o_.load_factor) s.load_factor = *o_.load_factor;
   const model::MotionRecord& r = s.motion;
   const bool same = r.valid && r.load_factor == s.load_factor &&

@@ -48,6 +48,10 @@ class TimeIntegrator {
   // every accepted (sub-)step. Throws ConvergenceError with `s` at the last accepted step.
   void step(model::State& s, double dt,
             const std::function<void(const model::State&)>& on_step = {});
+  // The same to the time t_end, which the step's last state carries exactly (a schedule's
+  // times t0 + n dt, computed, not summed: output times that select).
+  void stepTo(model::State& s, double t_end,
+              const std::function<void(const model::State&)>& on_step = {});
 
   // Drives a constrained dof over the next step(): its displacement and velocity at the step's
   // end (interpolated linearly in time over cut sub-steps; the acceleration is the velocity's
@@ -95,6 +99,7 @@ class TimeIntegrator {
   std::map<std::pair<int, int>, Target> targets_;  // driven dofs of the step under way
   DynamicReport report_;
   double factor_h_ = -1.0;
+  double end_time_ = 0.0;  // where the step under way ends
   int steps_since_update_ = 0;
   double force_scale_ = 0.0;  // largest force norm of the accepted steps
   double floor_ = 0.0;        // round-off floor of the residual at the last tangent

@@ -11,6 +11,14 @@
 namespace flexmoor::solve {
 namespace {
 
+// Eq. C.15 (and Eq. 5.1's displacement ratio): sqrt(sum du^2 / sum u^2) over the free dofs (|du|
+// when u vanishes).
+double changeRatio(const model::Assembler& assembler, const Eigen::VectorXd& du,
+                   const model::NodalField& u) {
+  const double u_norm = assembler.restrictToFree(asVector(u)).norm();
+  return u_norm > 0.0 ? du.norm() / u_norm : du.norm();
+}
+
 // Newton on one implicit pseudo-time step of unit length (Eq. C.8-C.10):
 // [K_T + K_L + C I] du = P - F(u) - C (u - u_prev), K_L the motion-dependent loads' stiffness.
 // Returns false if it does not converge.
@@ -34,7 +42,7 @@ bool relaxationStep(const model::Assembler& assembler, model::State& state,
     if (!du.allFinite()) return false;
     assembler.addFree(du, state.displacement);
     ++iterations;
-    const double change = displacementNorm(assembler, du, state.displacement);
+    const double change = changeRatio(assembler, du, state.displacement);
     if (change < 1e-10 || R.relative() < 0.1 * o.residual_tolerance) return true;
   }
   return false;
@@ -97,7 +105,7 @@ RelaxationReport relax(const model::Assembler& assembler, model::State& state,
   LargestMove move;  // the largest change of the last step
   state.load_factor = o.load_factor;
   assembler.applyPrescribed(state);
-  putAtRest(state);
+  putAtRest(state, o.frozen_waves);
   double C = o.damping;
   double mu = o.initial_damping_factor;
   for (int step = 1; step <= o.max_steps; ++step) {
@@ -115,7 +123,7 @@ RelaxationReport relax(const model::Assembler& assembler, model::State& state,
     const Eigen::VectorXd change =
         assembler.restrictToFree(asVector(state.displacement) - asVector(previous));
     move = largestMove(assembler.model(), change);
-    const double ratio = displacementNorm(assembler, change, state.displacement);  // Eq. C.15
+    const double ratio = changeRatio(assembler, change, state.displacement);  // Eq. C.15
     const double residual = outOfBalance(assembler, state, nullptr).relative();
     report.steps = step;
     report.change_ratio = ratio;

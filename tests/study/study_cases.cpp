@@ -18,7 +18,7 @@ void writeOscillatorCase(const std::filesystem::path& dir) {
       dir, "osc.yaml",
       hangingMassesCase() +
           R"(  - dynamic: {dt: 0.00314159265359 s, steps: 400, release: [{node: 2, dofs: [z]}],
-              tolerance: 1e-8}
+              tolerance: 1e-8, max_iterations: 30}
 )");
 }
 

@@ -211,11 +211,12 @@ void expectExactNet(const NetInputs& n, const Net& net, const model::State& stat
 // Example 2's procedure (ramped): four equal increments of full Newton (tangent every iteration)
 // from the unstressed net. The answer must match the exact solution to 1e-8 (displacements and
 // member forces); full Newton must converge in at most 6 iterations per increment, and
-// quadratically: once the correction |du|/|u| is below 1e-2, each one must be at most 10 times
-// the square of the one before, until round-off (1e-12); a tangent error that left linear
-// convergence at a rate of 0.1 or slower would fail this. The dissertation's own tolerance
-// (|du|/|u| < 0.0025, no residual check; it reports 5 iterations, then 3, for its lost net) is
-// run too and its counts are recorded.
+// quadratically: once the correction max |du_i| / L (L the element size, Convergence) is below
+// 1e-2, each one must be at most 150 times the square of the one before (measured: 128 at most),
+// until round-off (1e-12); a tangent error that left linear convergence at a rate of 0.1 or
+// slower would fail this. The dissertation's own tolerance (0.0025 on the increment, no residual
+// check; it reports 5 iterations, then 3, for its lost net) is run too and its counts are
+// recorded.
 TEST(CableNet, FourIncrementsOfNewtonMatchSymmetricSolution) {
   const NetInputs inputs;
   const NetSolution exact = solveNetExactly(inputs);
@@ -241,7 +242,7 @@ TEST(CableNet, FourIncrementsOfNewtonMatchSymmetricSolution) {
   for (const auto& c : run.corrections)
     for (size_t k = 0; k + 1 < c.size(); ++k)
       if (c[k] < 1e-2 && c[k + 1] > 1e-12) {
-        EXPECT_LE(c[k + 1], 10.0 * c[k] * c[k]) << "iteration " << k + 2 << " is not quadratic";
+        EXPECT_LE(c[k + 1], 150.0 * c[k] * c[k]) << "iteration " << k + 2 << " is not quadratic";
       }
 
   model::State loose = net.model->initialState();
