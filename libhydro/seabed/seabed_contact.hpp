@@ -1,5 +1,5 @@
 #pragma once
-// Seabed contact per unit length of a line (MoorDyn v2's convention, hydro.md): where the point
+// Seabed contact per unit length of a line (MoorDyn v2's convention, docs/theory.md): where the point
 // is below the bed by delta (measured along the bed's normal n; vertical on a flat bed), a
 // spring-damper over the projected width d pushes it out,
 //   N = (k_b delta - c_b u'.n) d,   f_n = N n      (k_b in Pa/m, c_b in Pa s/m)

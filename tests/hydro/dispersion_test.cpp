@@ -1,4 +1,4 @@
-// The linear dispersion relation omega^2 = g k tanh(k h) (hydro.md) at any depth, its limits, and
+// The linear dispersion relation omega^2 = g k tanh(k h) (docs/theory.md) at any depth, its limits, and
 // the group speed as d omega / d k.
 #include "libhydro/waves/dispersion.hpp"
 

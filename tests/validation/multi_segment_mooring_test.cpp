@@ -101,7 +101,7 @@ TEST(MultiSegmentMooring, LinesStartOnTheirCatenary) {
   }
 }
 
-// One OC3 line (ocean-cases.md) given three ways: one type, 20 L4 elements; two segments of the
+// One OC3 line (docs/theory.md#oc3-hywind) given three ways: one type, 20 L4 elements; two segments of the
 // same chain, 10 + 10 L4 (the same nodes); and those two with a body of zero net force at the
 // connection (1 m^3 and 1025 kg: buoyancy equal to weight). The three equilibria agree to 1e-8
 // (Newton's tolerance; measured 5e-12 at most).

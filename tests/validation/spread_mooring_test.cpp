@@ -1,6 +1,6 @@
 // The spread-mooring statics cases (cases/ocean/oc3-hywind-statics.yaml,
 // cases/ocean/oc4-semi-statics.yaml, scenario: spread_mooring) against the published MAP++
-// result (OC3, ocean-cases.md) and the independent test-side elastic catenary
+// result (OC3, docs/theory.md#oc3-hywind) and the independent test-side elastic catenary
 // (tests/support/mooring_catenary) on the same inputs, plus what the start promises: every line's
 // nodes on the catenary of the unstretched reference, and Newton from there in a few iterations.
 #include <gtest/gtest.h>
@@ -31,7 +31,7 @@ LineForces line(const std::string& json, int k) {
           summaryValue(json, "length_on_seabed_" + n)};
 }
 
-// OC3's line (ocean-cases.md): spans 853.87 - 5.2 m and 320 - 70 m, L = 902.2 m, w = 698.09 N/m
+// OC3's line (docs/theory.md#oc3-hywind): spans 853.87 - 5.2 m and 320 - 70 m, L = 902.2 m, w = 698.09 N/m
 // (77.7066 kg/m less 1025 pi 0.09^2 / 4 kg/m, times 9.80665), EA = 384.243e6 N.
 MooringLineInputs oc3Line() { return {853.87 - 5.2, 250.0, 902.2, 698.09, 384.243e6}; }
 
