@@ -1,5 +1,5 @@
-// Multi-segment spread-mooring lines (scenario: spread_mooring with segments: and attachments:,
-// issue 11): the named case cases/ocean/chain-wire-chain-statics.yaml against the line's own
+// Multi-segment spread-mooring lines (scenario: spread_mooring with segments: and attachments:):
+// the named case cases/ocean/chain-wire-chain-statics.yaml against the line's own
 // multi-segment elastic catenary (checked against the integrated catenary equations in
 // tests/hydro/multi_segment_catenary_test.cpp), its start on that catenary, the weight balance of
 // length_on_seabed across segments of different weights, and two lines that must be the same: a

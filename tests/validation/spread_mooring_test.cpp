@@ -42,7 +42,7 @@ MooringLineInputs oc4Line() {
 }
 
 // Each line against the test-side catenary: fairlead tension, H, V and the anchor's force (H on a
-// frictionless bed) within 1e-4 (issue 11 asks 0.2%; measured at most 4.3e-5, OC4 line 2's
+// frictionless bed) within 1e-4 (0.2% required; measured at most 4.3e-5, OC4 line 2's
 // anchor, on 20 L4 elements a line with the catenary's law EA (stretch - 1)), the laid length
 // within 0.05 m (measured 0.014 m at most). The fairlead's end tension (the end element's nodal
 // balance) and the magnitude of its support reaction are one force in statics: 1e-9.
@@ -60,7 +60,7 @@ void expectMatchesCatenary(const std::string& json, const MooringLineInputs& in)
 }
 
 // MAP++ (OpenFAST's regression summary): fairlead H 736,939.3 N, V 535,728.0 N, T 911,089.5 N,
-// 134.785 m on the seabed. Issue 11 asks the tension within 0.5% and the laid length within 1 m;
+// 134.785 m on the seabed. Required: the tension within 0.5% and the laid length within 1 m;
 // held here to 1e-4 (measured +2.3e-5, H +2.6e-5, V +1.7e-5) and 0.05 m (measured -0.013 m).
 TEST(SpreadMooring, Oc3MatchesMapPlusPlus) {
   const std::string json = runNamedCase("oc3-hywind-statics");

@@ -1,6 +1,6 @@
 // The quasi-static mooring-line reference (tests/support/mooring_catenary) against the published
 // OC3-Hywind MAP++ result (docs/theory.md#oc3-hywind), and the OC4-DeepCwind line solved on its stated
-// geometry. These check the reference solver, not flexmoor: issue 11 compares flexmoor with it.
+// geometry. These check the reference solver, not flexmoor; SpreadMooring.* compares flexmoor with it.
 #include "tests/support/mooring_catenary.hpp"
 
 #include <gtest/gtest.h>
