@@ -2,7 +2,7 @@
 # Builds the Google Benchmark harness in build-bench/ (Release) and runs it; prints, for every
 # benchmark family, the time per operation at each size and the growth exponent between sizes
 # (log t2/t1 / log n2/n1). Extra arguments go to flexmoor_bench (e.g. --benchmark_filter=Cable).
-# Targets (issue 4): cable chains <= N^1.15, membrane meshes <= N^1.5, a 1,000-dof cable Newton
+# Targets: cable chains <= N^1.15, membrane meshes <= N^1.5, a 1,000-dof cable Newton
 # iteration < 1 ms. The figures are recorded in docs/performance.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."

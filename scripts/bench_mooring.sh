@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The speed race of issue 11 (docs/performance.md, "Spread moorings: the speed race"):
+# The OC4 surge race against MoorDyn-C (docs/performance.md, "Mooring race"):
 #  1. oc4-semi-surge: the named case's 600 s of surge, its CPU per simulated second against the
 #     target of 5 ms (MoorDyn-C v2.7.1 at its converged resolution: 151 ms);
 #  2. cost against size: OC4's chain and water, N lines spread evenly around the platform

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Output cost (issue 9): runs the demo case cases/demo/driven-taut-cable.yaml stretched to 40,000
+# Output cost: runs the demo case cases/demo/driven-taut-cable.yaml stretched to 40,000
 # time steps with a netCDF record every 1,000th, 4th and every step, and a mooring-line-sized
 # cable (151 nodes) for 600 s at dt 0.01 s (60,000 steps) written every step, and prints the
 # wall-clock and CPU time of each run. Targets (docs/performance.md, "Output cost"): writing every

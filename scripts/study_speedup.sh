@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The wall time of a study on 1 worker and on 2 (docs/performance.md, "Studies"): each run into
 # a fresh directory, alternating, REPEATS times; prints one line a run and the ratio of the
-# fastest 2-worker run to the fastest 1-worker run (the target: at most 0.55).
+# fastest 2-worker run to the fastest 1-worker run (the target: at most 0.55).
 # Usage: scripts/study_speedup.sh [STUDY] [REPEATS] [FLEXMOOR_BINARY]
 #   e.g. scripts/study_speedup.sh cases/studies/tube-rao.yaml 2
 set -euo pipefail

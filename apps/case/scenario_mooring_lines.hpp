@@ -11,7 +11,7 @@
 //
 // Segments run from the anchor; `at: k` is the connection point between segments k and k + 1
 // (1-based). An attachment is a clump weight or a buoy there: its mass (a point mass, weighing),
-// its volume (buoyancy, and with drag_area and Ca the Morison loads of a point body, hydro.md);
+// its volume (buoyancy, and with drag_area and Ca the Morison loads of a point body, docs/theory.md);
 // its net upward force is (rho V - m) g.
 #include <yaml-cpp/yaml.h>
 

@@ -74,7 +74,7 @@ runs its steps in order, each from the state the previous one left:
            schedule of {dt, steps}; a Newton increment that raises the residual is halved
            (backtracking), a step that fails is halved and retried; progress is logged
 )"
-    // How loads and load factors pass from step to step (libstruct/solve, issue 9).
+    // How loads and load factors pass from step to step (libstruct/solve).
     R"(
 Loads from step to step: a load with a history is its value times the history at the current
 time. Gravity, nodal loads, pressures and prescribed displacements without one are scaled by

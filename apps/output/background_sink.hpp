@@ -4,7 +4,7 @@
 // cache, and while the element results and reactions of each record are computed from the
 // inputs the run's thread took (ResultFrame::pending): on a machine with a free core, writing
 // every step of a small model costs the run's thread little more than handing each frame over
-// (docs/performance.md, "Output cost, session 16").
+// (docs/performance.md, "Output cost").
 //
 // The frames wait in a ring (at most kRingBytes of them, at least two). The run's thread fills a
 // free frame and publishes it with one atomic store; the writing thread looks for published

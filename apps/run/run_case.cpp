@@ -49,7 +49,7 @@ void putOutputsInPlace(const Case& c, const RunOptions& options, const CaseOutpu
 
 // The records a run streams from its dynamic steps (time steps over output_every): a thread of
 // their own pays for itself from about kBackgroundRecords of them (docs/performance.md, "Output
-// cost, session 16": Example 9's 232 records cost 2 ms more with it, the demo's 40,000 save 40 ms).
+// cost": Example 9's 232 records cost 2 ms more with it, the demo's 40,000 save 40 ms).
 constexpr long kBackgroundRecords = 1000;
 
 // The cores this process may run on (its affinity: taskset, a container's CPU set); a writing

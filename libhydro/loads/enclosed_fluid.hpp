@@ -1,5 +1,5 @@
 #pragma once
-// A liquid enclosed by a membrane (the dissertation's Example 9, a fluid-filled tube; issue 10):
+// A liquid enclosed by a membrane (the dissertation's Example 9, a fluid-filled tube):
 // "the presence of the fluid inside the tube was simulated by the static resultant pressure and
 // by lumping the internal mass at the membrane nodal points". Both halves of that model:
 //

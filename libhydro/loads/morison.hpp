@@ -1,5 +1,5 @@
 #pragma once
-// Morison's load per unit length on a line (Appendix E, Eq. E.1-E.12; hydro.md) at one point of
+// Morison's load per unit length on a line (Appendix E, Eq. E.1-E.12; docs/theory.md) at one point of
 // the deformed line with unit tangent t, from the relative flow split into its normal and
 // tangential parts:
 //   f = 1/2 rho d Cn |v_rn| v_rn + 1/2 rho A_t Ct |v_rt| v_rt            drag (A_t = pi d or d)
@@ -40,7 +40,7 @@ MorisonPointLoad morisonLoad(const MorisonCoefficients& c, double rho, const Eig
                              const Eigen::Vector3d& u_dot, const Eigen::Vector3d& u_ddot,
                              const Eigen::Vector3d& v, const Eigen::Vector3d& a);
 
-// The added-mass matrix per unit length rho A [Ca (I - t t^T) + CaAx t t^T] (hydro.md): the
+// The added-mass matrix per unit length rho A [Ca (I - t t^T) + CaAx t t^T] (docs/theory.md): the
 // negative of morisonLoad's d_acceleration.
 Eigen::Matrix3d addedMassPerLength(const MorisonCoefficients& c, double rho,
                                    const Eigen::Vector3d& t);

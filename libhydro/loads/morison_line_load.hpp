@@ -1,5 +1,5 @@
 #pragma once
-// Morison's load on line elements in a sea (Appendix E, Eq. E.1-E.12; hydro.md), through
+// Morison's load on line elements in a sea (Appendix E, Eq. E.1-E.12; docs/theory.md), through
 // libstruct's load-point interface: at every integration point of the deformed line, the normal
 // and tangential drag on the relative velocity, Froude-Krylov and added mass (morison.hpp), and
 // the buoyancy rho g A of the displaced area, on the submerged part only (a point above the local

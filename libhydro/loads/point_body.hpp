@@ -1,5 +1,5 @@
 #pragma once
-// The hydrodynamic load on a point body (a buoy or a clump weight; hydro.md):
+// The hydrodynamic load on a point body (a buoy or a clump weight; docs/theory.md#point-bodies):
 //   f = rho g V_w e_z + 1/2 rho CdA |v_r| v_r + rho V (1 + Ca) a - rho V Ca u''
 // with V_w its submerged volume (a sphere's cap below the local surface), v_r = v - u'. Inertia
 // and drag act on the submerged part only: V and CdA are scaled by the wetted fraction V_w / V.

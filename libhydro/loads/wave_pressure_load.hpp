@@ -1,5 +1,5 @@
 #pragma once
-// The incident wave pressure on a membrane (hydro.md, "Wave pressure on membranes"): the gauge
+// The incident wave pressure on a membrane (docs/theory.md#wave-pressure-on-membranes): the gauge
 // pressure of the sea (hydrostatic -rho g z plus the dynamic linear-wave pressure, no diffraction
 // or radiation) at the deformed position of each integration point, zero above the surface, as a
 // follower load along the current normal n = y,1 x y,2 (load_point.hpp's SurfaceLoad).

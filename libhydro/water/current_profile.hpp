@@ -1,5 +1,5 @@
 #pragma once
-// A steady current U(z) along a horizontal heading (hydro.md): uniform, a power law from the bed
+// A steady current U(z) along a horizontal heading (docs/theory.md): uniform, a power law from the bed
 // (U_s ((z + h) / h)^(1/n)), or a table of (z, U) interpolated linearly and held constant beyond
 // its ends. Above the mean level the current is that at z = 0.
 #include <Eigen/Core>

@@ -70,7 +70,7 @@ double elevationSum(const ComponentTable& c, const ComponentScratch& s, Eigen::V
   return eta;
 }
 
-// The sums of one component's terms of addComponentKinematics's former form (hydro.md):
+// The sums of one component's terms of addComponentKinematics's former form (docs/theory.md):
 //   u = a w f_h cos(theta) along the heading d, w = a w f_v sin(theta);
 //   du/dt = a w^2 f_h sin(theta) d - a w^2 f_v cos(theta) up; p = rho g a f_p cos(theta),
 // with f_h = cosh(k (z + h)) / sinh(k h), f_v = sinh(k (z + h)) / sinh(k h), f_p = cosh(k (z +

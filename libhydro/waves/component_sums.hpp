@@ -1,6 +1,6 @@
 #pragma once
 // The linear kinematics of a sum of wave components at one point (wave_component.hpp gives one
-// component's; hydro.md the theory), over the components' terms laid out one array per term, so
+// component's; docs/theory.md the theory), over the components' terms laid out one array per term, so
 // that the loops over the components vectorise: the phases' cosines and sines and the depth
 // factors' exponentials through vector_math.hpp, the sums as SIMD reductions (compiled with
 // -fopenmp-simd). A 200-component sea costs about a third of what one component after another

@@ -1,5 +1,5 @@
 #pragma once
-// Linear (Airy) wave dispersion at any depth: omega^2 = g k tanh(k h) (hydro.md), and the phase
+// Linear (Airy) wave dispersion at any depth: omega^2 = g k tanh(k h) (docs/theory.md), and the phase
 // and group speeds that follow from it. Depth may be +infinity (deep water).
 namespace flexmoor::hydro {
 

@@ -1,5 +1,5 @@
 #pragma once
-// A shortcut for the loads' kinematics within a time step (issue 12): at one time t, the first
+// A shortcut for the loads' kinematics within a time step: at one time t, the first
 // query near a point evaluates the sea there with its gradient (Sea::at); a later query at the
 // same t within `radius` of it, and on the same side of the surface, is its first-order Taylor
 // expansion, value + gradient . dx (the elevation, velocity, acceleration and pressure; the

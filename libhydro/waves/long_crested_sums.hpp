@@ -3,7 +3,7 @@
 // under one envelope for all components (no front: the ramp's E(t) and dE/dt, or none): the
 // same linear kinematics, summed without the heading's products. Each of the 26 sums of the
 // general case is then d_x, d_y or a product of two times one of eleven sums over the
-// components (hydro.md's terms with E and d taken out), and u's d/dtheta is w's d/dz (and so
+// components (docs/theory.md's terms with E and d taken out), and u's d/dtheta is w's d/dz (and so
 // on for the other pairs), so a point costs 11 reductions instead of 15 terms and 26 dot
 // products; the results differ from the general sums by round-off (the sums' order).
 //

@@ -1,5 +1,5 @@
 #pragma once
-// One linear (Airy) wave component at finite depth (hydro.md): elevation a cos(theta), theta =
+// One linear (Airy) wave component at finite depth (docs/theory.md): elevation a cos(theta), theta =
 // k (x cos beta + y sin beta) - omega t + phi, and its velocity, local acceleration and dynamic
 // pressure below the mean level z = 0 over a flat bed at z = -h, with their gradients in closed
 // form.

@@ -147,7 +147,7 @@ std::string shortOfTarget(double target, double reached, double peak, int sign, 
 // Displacements past this many times the model's size mean the path has run away: the residual
 // test means nothing there (its round-off floor grows with the coordinates, Residual::floor), so
 // the increments "converge" with any residual, and a load the structure cannot carry would end in
-// a garbage equilibrium (Example 3's tube past its limit pressure: 5e16 ft, exit 0, before issue 9).
+// a garbage equilibrium (Example 3's tube past its limit pressure would end at 5e16 ft with exit 0).
 constexpr double kRunaway = 1e3;
 
 // The diagonal of the reference configuration's bounding box.

@@ -24,7 +24,7 @@ using flexmoor::test::scratch;
 using flexmoor::test::summaryValue;
 
 // Table 1 of the dissertation (seed-tables.csv), centre sag and support movement in ft; the
-// issue asks for 1.5%.
+// tolerance is 1.5%.
 struct Table1Row {
   const char* case_name;
   double sag, movement;
@@ -74,7 +74,7 @@ TEST(Cli, HelpTeachesTheCommands) {
                 "DIR/<case>.summary.json", "results/<case>/", "Exit codes", "Examples", "COMMAND --help"});
 }
 
-// Issue 9: `run --help` said "no case file or named case '--help'". Every command has its help.
+// `run --help` is help, not a case named '--help'. Every command has its help.
 TEST(Cli, EveryCommandHasItsOwnHelp) {
   const CliRun run = flexmoor("run --help");
   EXPECT_EQ(run.exit_code, 0) << run.output;
@@ -96,7 +96,7 @@ TEST(Cli, EveryCommandHasItsOwnHelp) {
   EXPECT_EQ(version.output, std::string("flexmoor ") + FLEXMOOR_VERSION + "\n");
 }
 
-// Issue 9: `run -o DIR CASE` was refused. Options go anywhere after the command.
+// `run -o DIR CASE` runs as `run CASE -o DIR` does. Options go anywhere after the command.
 TEST(Cli, RunTakesItsOptionsBeforeOrAfterTheCase) {
   const fs::path before = scratch("options-before");
   const CliRun a = flexmoor("run -o " + before.string() + " --no-vtk ex1-suspended-cable-8xL2");
@@ -111,7 +111,7 @@ TEST(Cli, RunTakesItsOptionsBeforeOrAfterTheCase) {
   EXPECT_TRUE(fs::exists(after / "ex1-suspended-cable-8xL2-1.vtk")) << b.output;
 }
 
-// Issue 9: `cases extra` was accepted. A missing, extra or unknown argument is a usage error
+// `cases extra` is refused. A missing, extra or unknown argument is a usage error
 // (exit 1) that names it, on stderr, and runs nothing.
 TEST(Cli, UsageErrorsNameTheArgumentAndExitWith1) {
   const fs::path dir = scratch("usage");
@@ -141,7 +141,7 @@ TEST(Cli, UsageErrorsNameTheArgumentAndExitWith1) {
   EXPECT_TRUE(fs::is_empty(dir)) << "a usage error runs nothing";
 }
 
-// Issue 9: a 1 KB file of nested aliases kept `check` busy for minutes. It is refused at the
+// A 1 KB file of nested aliases would keep `check` busy for minutes. It is refused at the
 // expansion budget, on stderr, naming the line; the test only asks that it finishes. Here h is
 // 10^8 scalars; a..e hold 123,460 values with their keys and lists, f alone 1,111,111, which
 // passes the budget of 1,000,000 plus two per character.

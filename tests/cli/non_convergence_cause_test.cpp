@@ -59,9 +59,9 @@ TEST(NonConvergence, LoadControlPastTheLimitLoadSaysSo) {
           "the largest displacement increment", "is at node"});
 }
 
-// Arc length past the limit pressure. Before issue 9 the path ran away to a radius of 5e16 ft,
-// where the residual's round-off floor passes anything, "landed" on load factor 6 and exited 0
-// with that radius in summary.json. Now it stops where the displacements pass 1000 times the
+// Arc length past the limit pressure. Unchecked, the path runs away to a radius of 5e16 ft,
+// where the residual's round-off floor passes anything, "lands" on load factor 6 and exits 0
+// with that radius in summary.json. It stops where the displacements pass 1000 times the
 // model's size and names the limit: 5.16 (the closed form, to the 3 digits printed).
 TEST(NonConvergence, ArcLengthThatRunsAwayNamesTheLimitLoad) {
   const CliRun r = runText("burst-arc", burstingTube("static: {load_factor: 6, increments: 5, "

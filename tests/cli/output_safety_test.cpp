@@ -1,4 +1,4 @@
-// Results are never lost or corrupted (issue 9), through the command as a user meets it: a rerun
+// Results are never lost or corrupted, through the command as a user meets it: a rerun
 // while a reader holds the old file, a rerun that fails, two runs of one case at once, a killed
 // run, links planted at the outputs, stale files of an earlier run and the default directory.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The figures of issue 12 (`flexmoor plot`, apps/plot/flexmoor_plot.py): a series' spectrum
+// The figures (`flexmoor plot`, apps/plot/flexmoor_plot.py): a series' spectrum
 // against its sea's target, line shapes at chosen times, and from a study's DIR/study.nc
 // (written here in the format `flexmoor study` writes, writeStudy below) a response-amplitude
 // curve, extremes against Hs and the members' response spectra; each a PNG of the size asked for, and bad arguments refused
@@ -229,7 +229,7 @@ void writeStudy(const fs::path& path, const std::vector<Parameter>& parameters,
   check(nc_close(file));
 }
 
-// 3 sea states x 3 seeds (the issue's OC4 study's shape), member 9 failed; the tension's maximum
+// 3 sea states x 3 seeds (the shape of the OC4 study), member 9 failed; the tension's maximum
 // and MPM grow with Hs, differ by seed; a Gaussian response spectrum per member.
 fs::path writeSeaStateStudy(const std::string& name) {
   const fs::path dir = scratch(name);
@@ -274,7 +274,7 @@ TEST(PlotFigures, ResponseSpectraOfAStudy) {
   expectPng(png, 1040, 624);
 }
 
-// A regular-wave study (the issue's tube-rao: periods 4-12 s, height 2 m): heave amplitude
+// A regular-wave study (like tube-rao: periods 4-12 s, height 2 m): heave amplitude
 // against the period, as an RAO with the height a parameter.
 TEST(PlotFigures, ResponseAmplitudeCurveOfARegularWaveStudy) {
   const fs::path dir = scratch("plot-rao");

@@ -1,4 +1,4 @@
-// libFuzzer target of the case reader (issue 9): any bytes given to readCase must end in a Case
+// libFuzzer target of the case reader: any bytes given to readCase must end in a Case
 // or in a CaseError (or another std::exception) naming what is wrong. A crash, a sanitizer
 // report, a leak, a time-out or a blow-up in memory is a finding. scripts/fuzz.sh builds and
 // runs it with the shipped cases as the seed corpus.

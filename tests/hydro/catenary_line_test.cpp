@@ -59,7 +59,7 @@ void expectProfileConsistent(const CatenaryLine& line) {
   }
 }
 
-// MAP++ (OpenFAST regression summary, ocean-cases.md): H 736,939.3 N, V 535,728.0 N, 134.785 m
+// MAP++ (OpenFAST regression summary, docs/theory.md): H 736,939.3 N, V 535,728.0 N, 134.785 m
 // on the seabed, anchor H 736,845.2 N (MAP++ with its tiny default friction; ours is
 // frictionless, so the anchor carries H itself: 1.3e-4 off). Forces to 1e-5 (the published
 // figures' 7 digits and MAP++'s tolerance), the laid length to 1e-4.

@@ -1,4 +1,4 @@
-// The linear dispersion relation omega^2 = g k tanh(k h) (hydro.md) at any depth, its limits, and
+// The linear dispersion relation omega^2 = g k tanh(k h) (docs/theory.md) at any depth, its limits, and
 // the group speed as d omega / d k.
 #include "libhydro/waves/dispersion.hpp"
 
@@ -15,7 +15,7 @@ const double kInf = std::numeric_limits<double>::infinity();
 
 double omegaOf(double k, double h) { return std::sqrt(kG * k * std::tanh(k * h)); }
 
-// Residual |omega^2 / (g k tanh k h) - 1| below 1e-12 (the bound; round-off is ~1e-16)
+// Residual |omega^2 / (g k tanh k h) - 1| below 1e-12 (the required bound; round-off is ~1e-16)
 // from k h = 1e-5 (very shallow) to 200 (deep), 200 points a decade apart by 10^(1/20).
 TEST(Dispersion, ResidualBelow1e12AtEveryDepth) {
   const double h = 50.0;

@@ -1,7 +1,7 @@
 // Irregular seas from a spectrum (libhydro/waves/wave_synthesis.hpp): for each discretisation
 // (equal spacing on an FFT grid, random frequencies in equal bins, equal-energy bins), a long
 // record's Welch spectrum (FFTW; Hann window, half overlap) gives back the target's Hs within 5%
-// and Tp within 3% (issue 12's bounds); a seed gives the same elevation to the last bit, another
+// and Tp within 3% (the required bounds); a seed gives the same elevation to the last bit, another
 // seed another sea; the equal grid repeats with its stated period and its FFT record is the sum of
 // cosines; equal-energy bins each hold m0 / N; spreading keeps the energy.
 #include <gtest/gtest.h>
@@ -77,7 +77,7 @@ class SpectrumRecord : public ::testing::TestWithParam<Case> {};
 // A 3 h sea state (Hs 6 m, Tp 10 s) at dt = 0.5 s: 21,600 samples, 9 Welch segments of 2,048 s.
 // The equal grid's repeat period is the record's 3 h (3,781 components in [0.5, 4] wp), its
 // record one inverse FFT; the others 300 components, their record summed. Hs within 5% and Tp
-// within 3% of the target (issue 12); the band [0.5, 4] wp holds 99.9% of m0 (Hs -0.05%).
+// within 3% of the target; the band [0.5, 4] wp holds 99.9% of m0 (Hs -0.05%).
 TEST_P(SpectrumRecord, WelchEstimateGivesBackHsAndTp) {
   const Case c = GetParam();
   const double hs = 6.0, tp = 10.0, dt = 0.5, duration = 10800.0;

@@ -1,4 +1,4 @@
-// Morison's load on a line per unit length (Appendix E; hydro.md) and on a point body: closed
+// Morison's load on a line per unit length (Appendix E; docs/theory.md) and on a point body: closed
 // forms for a line towed broadside and along its axis, accelerated through still water and
 // struck by an accelerating flow; every derivative against central differences.
 #include "libhydro/loads/morison.hpp"

@@ -1,5 +1,5 @@
 // Seabed contact per unit length (MoorDyn v2's spring-damper with smooth saturated friction;
-// hydro.md) and bathymetry: closed forms at rest and sliding, and every derivative against
+// docs/theory.md) and bathymetry: closed forms at rest and sliding, and every derivative against
 // central differences on a sloped bed.
 #include <gtest/gtest.h>
 

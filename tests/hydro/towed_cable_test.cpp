@@ -1,5 +1,5 @@
 // A straight cable towed and accelerated through still water (Morison's load, Appendix E;
-// hydro.md), integrated by the cable elements and summed by the assembler: the closed forms of a
+// docs/theory.md), integrated by the cable elements and summed by the assembler: the closed forms of a
 // uniform load on a line of length L,
 //   towed broadside at U:       1/2 rho Cn d L U^2 against the motion,
 //   towed along its axis at U:  1/2 rho (pi d) Ct L U^2 (MoorDyn's area, the default) or

@@ -1,4 +1,4 @@
-// The incident wave pressure on membranes (hydro.md, "Wave pressure on membranes"; Eq. 3.30-3.37
+// The incident wave pressure on membranes (docs/theory.md#wave-pressure-on-membranes; Eq. 3.30-3.37
 // with a pressure field p(y, t)): the elements' surface-load stiffness against central
 // differences of their nodal forces, the resultant on fixed submerged strips against the closed
 // integral of the linear wave pressure, and what the gradient part of the load stiffness is

@@ -44,7 +44,7 @@ TEST(WaveSpectrum, JonswapIsNormalisedAndPeaksAtTp) {
 
 // A 6 h record at 0.5 s of a 200-component JONSWAP sea: its variance gives Hs within 5% and
 // the peak of its Welch spectrum (segments of 4096 samples, Hann window, half overlap,
-// smoothed over three bins) gives Tp within 3% (the bounds).
+// smoothed over three bins) gives Tp within 3% (the required bounds).
 TEST(WaveSynthesis, LongRecordReproducesHsAndTp) {
   const double hs = 4.0, tp = 9.0, depth = 200.0;
   const WaveSpectrum j = WaveSpectrum::jonswap(hs, tp, 3.3);

@@ -28,7 +28,7 @@ std::vector<int> addStraightCable(model::Model& model, int first, int last, int 
 void pin(model::Model& model, int node);
 
 // ---------------------------------------------------------------------------------------------
-// Example 1 (seed-examples.md): a straight, horizontal, unstressed cable along +x from the
+// Example 1 (docs/theory.md#example-1): a straight, horizontal, unstressed cable along +x from the
 // origin; all y dofs fixed; the left end pinned in x and z; the right end fixed in z (a roller)
 // and pulled by a horizontal force H in +x; self weight in -z. Units: ft, slug, s, lbf.
 struct SuspendedCableInputs {

@@ -1,6 +1,6 @@
 #pragma once
 // What the tests of libhydro's catenary solve share: OC3-Hywind's mooring line
-// (../shared/reference/ocean-cases.md) as its inputs (spans 848.67 m and 250 m, L = 902.2 m,
+// (docs/theory.md#oc3-hywind) as its inputs (spans 848.67 m and 250 m, L = 902.2 m,
 // w = 698.09 N/m, EA = 384.243e6 N), and the check that a line is refused with a message.
 #include <gtest/gtest.h>
 

@@ -18,7 +18,7 @@
 //      so, at s = L0 and s = L0 / 2,
 //        span = H L0 / EA + (2 H / w) asinh(V / H)
 //        sag  = (sqrt(H^2 + V^2) - H) / w + w L0^2 / (8 EA)
-//  (b) the law of flexmoor's LinearElasticCable (formulation.md, Eq. 2.53): second Piola
+//  (b) the law of flexmoor's LinearElasticCable (docs/theory.md#cable-laws, Eq. 2.53): second Piola
 //      S = E (lambda^2 - 1) / 2, so the force is T = EA lambda (lambda^2 - 1) / 2; lambda(T) is the
 //      root of that cubic (Newton) and the geometry is integrated numerically with GSL's adaptive
 //      quadrature (gsl_integration_qags, epsabs 0, epsrel 1e-12).

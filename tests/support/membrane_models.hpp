@@ -9,7 +9,7 @@
 
 namespace flexmoor::test {
 
-// Example 3 (seed-examples.md): L = 30, R = 10, h0 = 0.01, C1 = 2300, C2 = 280, axial motion
+// Example 3 (docs/theory.md#example-3): L = 30, R = 10, h0 = 0.01, C1 = 2300, C2 = 280, axial motion
 // restrained (plane strain), pressure in the units of C1, C2.
 struct TubeInputs {
   double length = 30.0, radius = 10.0, thickness = 0.01, C1 = 2300.0, C2 = 280.0;

@@ -287,7 +287,7 @@ TEST(CaseReaderSea, NetcdfStatesTheTargetSpectrumAndTheElevation) {
   nc_close(table);
 }
 
-// The example syntax reads, and a time step that does not resolve the sea's shortest
+// The documented example syntax reads, and a time step that does not resolve the sea's shortest
 // component (the band's top, 4 wp: 2.5 s at Tp 10 s) is warned of with that period.
 TEST(CaseReaderSea, WarnsOfATimeStepTooLongForTheBand) {
   const Case c = readCase(test::writeCase(

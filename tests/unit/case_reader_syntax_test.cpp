@@ -1,4 +1,4 @@
-// YAML text that yaml-cpp lets through or words poorly (issue 9): an unclosed quote, nesting
+// YAML text that yaml-cpp lets through or words poorly: an unclosed quote, nesting
 // deep enough to exhaust the parser, aliases that expand without bound. Each gives one message
 // with its line, and nothing else of the file is read.
 #include <gtest/gtest.h>

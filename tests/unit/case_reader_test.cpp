@@ -241,9 +241,9 @@ TEST(CaseReader, UnknownKeyIsReportedWithTheAllowedKeys) {
   EXPECT_NE(m[0].find("did you mean 'elements'?"), std::string::npos) << m[0];
 }
 
-// Issue 9: an unknown key that was not the last of its map shifted every later key onto its
-// successor's value (std::remove_if assigned YAML::Node over YAML::Node, which rebinds the node
-// in the document): one typo gave a cascade of bogus errors. One mistake, one message.
+// An unknown key that is not the last of its map must not shift every later key onto its
+// successor's value (std::remove_if assigning YAML::Node over YAML::Node rebinds the node in
+// the document): one typo would give a cascade of bogus errors. One mistake, one message.
 TEST(CaseReader, MisspelledFirstKeyOfAMapIsTheOnlyProblem) {
   std::string text = kExampleOne;
   text.replace(text.find("relax: {tolerance:"), 18, "relax: {tolerence:");

@@ -154,7 +154,7 @@ TEST(MembraneMaterial, LinearElasticShearStressIsShearModulusTimesEngineeringStr
   EXPECT_NEAR(S(1, 1), 0.0, 1e-9 * E * g);
 }
 
-// Cylinder (formulation.md): axial stretch 1, hoop stretch L gives the physical hoop stress
+// Cylinder (docs/theory.md): axial stretch 1, hoop stretch L gives the physical hoop stress
 // S = 2 (C1 + C2)(1 - L^-4) and, from the principal-stretch form of the law, the axial stress
 // 2 C1 (1 - L^-2) + 2 C2 (L^2 - 1); 1e-12 relative.
 TEST(MembraneMaterial, MooneyRivlinCylinderHoopStressMatchesClosedForm) {

@@ -1,4 +1,4 @@
-// The checks of the built model (apps/case/model_checks.cpp, issue 9): what `check` must refuse
+// The checks of the built model (apps/case/model_checks.cpp): what `check` must refuse
 // because `run` would fail on it or report a wrong number, each with the line that defines the
 // element, node, support or step; and the warnings for what runs but perhaps not as meant.
 // The catalogue tests/bad_inputs/ has one file per class for the command line; these tests go

@@ -2,7 +2,7 @@
 // its axial motion restrained, through the command: `flexmoor run ex3-tube-inflation-...` and its
 // summary.json, against the exact solution (Green & Adkins, plane strain along the axis).
 //
-// Inputs (seed-examples.md): L = 30 ft, R = 10 ft, h0 = 0.01 ft, C1 = 2300, C2 = 280 psf, pressure
+// Inputs (docs/theory.md#example-3): L = 30 ft, R = 10 ft, h0 = 0.01 ft, C1 = 2300, C2 = 280 psf, pressure
 // 1..5 psf in five increments (the pressure is in the units of C1, C2: the tube's pressure can
 // never exceed p_lim = 2 (C1 + C2) h0 / R = 5.16 psf). Exact solution, lambda the hoop stretch:
 //   p = p_lim (1 - lambda^-4)          ->  lambda = (1 - p / p_lim)^(-1/4)

@@ -4,7 +4,7 @@
 // traced by arc-length control) and its summary.json (pole heights in ft at 0.3, 0.6, ..., 2.1,
 // 2.25 and 2.4 psi).
 //
-// Inputs (seed-examples.md): R = 4.0 in, h0 = 0.05 in, C1 = 24 psi, C2 = 3 psi. The dissertation's
+// Inputs (docs/theory.md#example-4): R = 4.0 in, h0 = 0.05 in, C1 = 24 psi, C2 = 3 psi. The dissertation's
 // figures (Fig. 16-17, pole height against pressure) were lost, so the references are independent
 // solutions of the same problem:
 //

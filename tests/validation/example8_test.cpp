@@ -1,6 +1,6 @@
 // Example 8, the relaxation test (cases/seed/ex8-relaxation-test.yaml): a buoy held displaced on
 // a light rope under water is released and rises for 3 s. The experiment's series were not
-// recovered (seed-examples.md), so the checks are the ones the issue asks for and physics:
+// recovered (docs/theory.md#example-8), so the checks are the required ones and physics:
 //  - convergence: halving dt and doubling the elements each move the buoy's position at 1 s and
 //    3 s by under 1% (measured: at most 0.11%, the doubled mesh's x at 1 s);
 //  - the buoy rises and swings towards the vertical above the anchor, never further from the

@@ -1,5 +1,5 @@
-// Multi-segment spread-mooring lines (scenario: spread_mooring with segments: and attachments:,
-// issue 11): the named case cases/ocean/chain-wire-chain-statics.yaml against the line's own
+// Multi-segment spread-mooring lines (scenario: spread_mooring with segments: and attachments:):
+// the named case cases/ocean/chain-wire-chain-statics.yaml against the line's own
 // multi-segment elastic catenary (checked against the integrated catenary equations in
 // tests/hydro/multi_segment_catenary_test.cpp), its start on that catenary, the weight balance of
 // length_on_seabed across segments of different weights, and two lines that must be the same: a
@@ -101,7 +101,7 @@ TEST(MultiSegmentMooring, LinesStartOnTheirCatenary) {
   }
 }
 
-// One OC3 line (ocean-cases.md) given three ways: one type, 20 L4 elements; two segments of the
+// One OC3 line (docs/theory.md#oc3-hywind) given three ways: one type, 20 L4 elements; two segments of the
 // same chain, 10 + 10 L4 (the same nodes); and those two with a body of zero net force at the
 // connection (1 m^3 and 1025 kg: buoyancy equal to weight). The three equilibria agree to 1e-8
 // (Newton's tolerance; measured 5e-12 at most).

@@ -67,7 +67,7 @@ summary:
   return text + summary;
 }
 
-// OC4's line (ocean-cases.md), as in spread_mooring_test.cpp: spans 796.732 m and 186 m,
+// OC4's line (docs/theory.md#oc4-deepcwind), as in spread_mooring_test.cpp: spans 796.732 m and 186 m,
 // L = 835.35 m, w = (113.35 - 1025 pi 0.0766^2 / 4) 9.80665 N/m, EA = 7.536e8 N.
 // User + system CPU of this process's children that have ended, in seconds.
 double childrenCpuSeconds() {

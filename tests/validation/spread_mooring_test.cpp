@@ -1,6 +1,6 @@
 // The spread-mooring statics cases (cases/ocean/oc3-hywind-statics.yaml,
 // cases/ocean/oc4-semi-statics.yaml, scenario: spread_mooring) against the published MAP++
-// result (OC3, ocean-cases.md) and the independent test-side elastic catenary
+// result (OC3, docs/theory.md#oc3-hywind) and the independent test-side elastic catenary
 // (tests/support/mooring_catenary) on the same inputs, plus what the start promises: every line's
 // nodes on the catenary of the unstretched reference, and Newton from there in a few iterations.
 #include <gtest/gtest.h>
@@ -31,7 +31,7 @@ LineForces line(const std::string& json, int k) {
           summaryValue(json, "length_on_seabed_" + n)};
 }
 
-// OC3's line (ocean-cases.md): spans 853.87 - 5.2 m and 320 - 70 m, L = 902.2 m, w = 698.09 N/m
+// OC3's line (docs/theory.md#oc3-hywind): spans 853.87 - 5.2 m and 320 - 70 m, L = 902.2 m, w = 698.09 N/m
 // (77.7066 kg/m less 1025 pi 0.09^2 / 4 kg/m, times 9.80665), EA = 384.243e6 N.
 MooringLineInputs oc3Line() { return {853.87 - 5.2, 250.0, 902.2, 698.09, 384.243e6}; }
 
@@ -42,7 +42,7 @@ MooringLineInputs oc4Line() {
 }
 
 // Each line against the test-side catenary: fairlead tension, H, V and the anchor's force (H on a
-// frictionless bed) within 1e-4 (issue 11 asks 0.2%; measured at most 4.3e-5, OC4 line 2's
+// frictionless bed) within 1e-4 (0.2% required; measured at most 4.3e-5, OC4 line 2's
 // anchor, on 20 L4 elements a line with the catenary's law EA (stretch - 1)), the laid length
 // within 0.05 m (measured 0.014 m at most). The fairlead's end tension (the end element's nodal
 // balance) and the magnitude of its support reaction are one force in statics: 1e-9.
@@ -60,7 +60,7 @@ void expectMatchesCatenary(const std::string& json, const MooringLineInputs& in)
 }
 
 // MAP++ (OpenFAST's regression summary): fairlead H 736,939.3 N, V 535,728.0 N, T 911,089.5 N,
-// 134.785 m on the seabed. Issue 11 asks the tension within 0.5% and the laid length within 1 m;
+// 134.785 m on the seabed. Required: the tension within 0.5% and the laid length within 1 m;
 // held here to 1e-4 (measured +2.3e-5, H +2.6e-5, V +1.7e-5) and 0.05 m (measured -0.013 m).
 TEST(SpreadMooring, Oc3MatchesMapPlusPlus) {
   const std::string json = runNamedCase("oc3-hywind-statics");

@@ -1,12 +1,12 @@
 // Validation against Table 1 of the dissertation (Chapter V, Example 1: a suspended cable found by
-// viscous relaxation). Reference: seed-tables.csv / seed-examples.md, centre sag dC and support
+// viscous relaxation). Reference: seed-tables.csv, docs/theory.md#example-1, centre sag dC and support
 // movement dR in ft:
 //   8 linear elements     58.13 / 47.68
 //   4 quadratic elements  59.25 / 46.93
 //   2 cubic elements      57.84 / 46.89
 //   "true solution"       57.80 / 47.92
 // The span and the roller force were in a lost figure; L0 = 200 ft and H = 5.8 lbf are the
-// reconstruction (seed-examples.md). E, A, rho, g and the relaxation parameters (tolerance 0.001,
+// reconstruction (docs/theory.md#example-1). E, A, rho, g and the relaxation parameters (tolerance 0.001,
 // C = 10,000, initial damping factor 0.01, decrement 1.00) are the dissertation's.
 //
 // The models are the dissertation's: straight, equally spaced nodes, default quadrature (as many
@@ -98,7 +98,7 @@ TEST(Table1, FourQuadraticElementsTensionOnly) {
 }
 
 // The published "true solution" is itself an elastic catenary: the pair 57.80 / 47.92 ft is that
-// of L0 = 200.38 ft, H = 5.795 lbf (seed-examples.md), not of the reconstructed 200 ft / 5.8 lbf.
+// of L0 = 200.38 ft, H = 5.795 lbf (docs/theory.md#example-1), not of the reconstructed 200 ft / 5.8 lbf.
 // Reference: the analytic catenary (law (b)); tolerance 0.01 ft, the published rounding (0.005 ft)
 // plus that of the back-solved inputs.
 TEST(Table1, PublishedTrueSolutionIsAnElasticCatenary) {

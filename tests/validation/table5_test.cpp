@@ -13,7 +13,7 @@
 // Checks per model:
 //  1. Table 5, every printed entry within 0.1% relative. No entry of Table 5 is excluded: all 45
 //     agree with the flexmoor models to 3e-4 or better (the printed figures carry 4 or 5
-//     significant digits, about 1e-4, so the 0.1% tolerance is the and not a fit). The
+//     significant digits, about 1e-4, so the 0.1% tolerance is the requirement, not a fit). The
 //     largest difference, 25 Q4 modes 7/8 printed 115.80 against 115.832 (2.8e-4; the
 //     consistent-mass closed form of check 3 gives 115.832 too), is the dissertation's own:
 //     Table 6 prints 11.99% for it, which is 115.80 / 103.40.

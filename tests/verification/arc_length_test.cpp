@@ -4,7 +4,7 @@
 // hangs inverted. Asked for 1.5 times the limit load, the arc-length solver must follow the
 // falling (unstable) branch and land on the inverted equilibrium.
 //
-// Closed form (formulation.md, Eq. 2.53, S = E (lambda^2 - 1) / 2): half span b, rise h, bar
+// Closed form (docs/theory.md#cable-laws, Eq. 2.53, S = E (lambda^2 - 1) / 2): half span b, rise h, bar
 // length L0 = sqrt(b^2 + h^2). With the apex lowered by w, a bar is l = sqrt(b^2 + (h - w)^2)
 // long, stretched lambda = l / L0, and carries N = S lambda A0; vertical equilibrium of the apex
 // gives P(w) = -2 N (h - w) / l (positive downwards). Bars carry compression (Compression::Carry).

@@ -90,9 +90,9 @@ EndTensionErrors hangAndMeasure(int elements, int nodes_per_element) {
 // / |F| = 2.2e-16 x 100 ft x 1.6e4 lbf/ft x 8 / 11.6 lbf = 2.5e-10 here. Tolerance 3e-10 at every
 // end, just above that floor (the measured errors below are under it).
 
-// 16 quadratic elements. Before issue 9 the end tension was the axial force from the strain at
-// xi = -1: measured 1.16 (116%) off at the pin, with the Gauss-point tensions off by up to 2.9
-// times the true one, while the shape is right to 4e-4 and the reactions to the residual. Now:
+// 16 quadratic elements. The axial force from the strain at xi = -1, taken as the end tension,
+// is 1.16 (116%) off at the pin, with the Gauss-point tensions off by up to 2.9 times the true
+// one, while the shape is right to 4e-4 and the reactions to the residual. By the balance:
 // measured 2.3e-12 at the pin, 2.8e-11 at the roller, 4.9e-11 at the joints (the nodal forces of
 // a one-dimensional element are exact where its interior equations hold).
 TEST(EndTension, QuadraticCatenaryEndsFromTheNodalForceBalance) {

@@ -240,7 +240,7 @@ TEST(HoopCable, RadialStiffnessMatchesFiniteDifference) {
   EXPECT_LT(error, 1e-6);
 }
 
-// Example 3 (seed-examples.md, Green & Adkins): radial displacement (lambda - 1) R at p = 1..5,
+// Example 3 (docs/theory.md#example-3, Green & Adkins): radial displacement (lambda - 1) R at p = 1..5,
 // including p = 5 where the stretch is about 2.38. Newton with the consistent pressure load
 // stiffness, one increment per unit of pressure. Tolerances just above the largest measured
 // error of each model: 2 x Q8 0.584% (at p = 5) -> 0.65%; axisymmetric (2 quadratic elements, the

@@ -1,6 +1,6 @@
 // The quasi-static mooring-line reference (tests/support/mooring_catenary) against the published
-// OC3-Hywind MAP++ result (ocean-cases.md), and the OC4-DeepCwind line solved on its stated
-// geometry. These check the reference solver, not flexmoor: issue 11 compares flexmoor with it.
+// OC3-Hywind MAP++ result (docs/theory.md#oc3-hywind), and the OC4-DeepCwind line solved on its stated
+// geometry. These check the reference solver, not flexmoor; SpreadMooring.* compares flexmoor with it.
 #include "tests/support/mooring_catenary.hpp"
 
 #include <gtest/gtest.h>
@@ -29,7 +29,7 @@ TEST(MooringCatenary, Oc3LineMatchesMapPlusPlus) {
 }
 
 // OC4: spans 796.732 m and 186 m from the stated anchor and fairlead points, L = 835.35 m,
-// w = (113.35 - 1025 pi 0.0766^2 / 4) 9.80665 N/m, EA = 7.536e8 N. ocean-cases.md quotes "about
+// w = (113.35 - 1025 pi 0.0766^2 / 4) 9.80665 N/m, EA = 7.536e8 N. docs/theory.md quotes "about
 // 908 kN horizontal, 631 kN vertical per line" from an independent elastic-catenary solve; the
 // reference reproduces those to their three digits (0.5%).
 TEST(MooringCatenary, Oc4LineMatchesTheQuotedIndependentSolve) {

@@ -5,7 +5,7 @@
 // Exact solution (no weight, so each half is a straight segment, which two-node elements
 // represent exactly): by symmetry the mid-span node sits at x = (L + delta) / 2, z = -w. Each half
 // has unstretched length L / 2 and current length l = sqrt(((L + delta) / 2)^2 + w^2), so its
-// stretch is lambda = 2 l / L and its tension, with flexmoor's law (formulation.md, Eq. 2.53,
+// stretch is lambda = 2 l / L and its tension, with flexmoor's law (docs/theory.md, Eq. 2.53,
 // S = E (lambda^2 - 1) / 2), T = EA lambda (lambda^2 - 1) / 2. Vertical equilibrium of the loaded
 // node: 2 T w / l = P, one scalar equation in w, increasing in w, solved by Brent's method.
 // Tolerance: 1e-8 relative on the deflection and the tension (the Newton solve is converged to a

@@ -43,9 +43,9 @@ void expectFragments(const std::string& message, const std::vector<std::string>&
   EXPECT_EQ(message.find("000000"), std::string::npos) << message;
 }
 
-// Static: the singular tangent is regularised and the solve pushes the wire off to 1e10 m. Before
-// issue 9 that passed as an equilibrium (residual 0.75, under a round-off floor of about 5 at such
-// coordinates; the floor is now capped at 1e-4).
+// Static: the singular tangent is regularised and the solve pushes the wire off to 1e10 m. That
+// would pass as an equilibrium (residual 0.75, under a round-off floor of about 5 at such
+// coordinates) if the floor were not capped at 1e-4.
 TEST(SolverDiagnosis, StaticMechanismUnderLoadIsNamed) {
   const auto m = unsupportedWire(7850.0);
   m->numberEquations();
@@ -56,7 +56,7 @@ TEST(SolverDiagnosis, StaticMechanismUnderLoadIsNamed) {
                             "the largest displacement increment of the last iteration"});
 }
 
-// Relaxation: before issue 9, "did not reach equilibrium in 50 steps" and nothing more.
+// Relaxation: the message says more than "did not reach equilibrium in 50 steps".
 TEST(SolverDiagnosis, RelaxationOfAMechanismUnderLoadIsNamed) {
   const auto m = unsupportedWire(7850.0);
   m->numberEquations();
@@ -69,7 +69,7 @@ TEST(SolverDiagnosis, RelaxationOfAMechanismUnderLoadIsNamed) {
                             "a mechanism", "at node"});
 }
 
-// Modes without mass: before issue 9, "the mass matrix is not positive definite" alone. The wire
+// Modes without mass: the dof is named, not only "the mass matrix is not positive definite". The wire
 // is pinned at its start (node 1) and its end (node 2, added second) rides on a roller along x:
 // its x is the first free dof, named with the default names (1-based model nodes).
 TEST(SolverDiagnosis, ModesOfAMasslessDofNameIt) {

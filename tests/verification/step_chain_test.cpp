@@ -111,9 +111,9 @@ void expectSameSummary(const std::string& one, const std::string& split,
 // Reference: the same 1 s of the spring pendulum in one dynamic step (100 steps of 0.01 s).
 // Split into five consecutive dynamic steps of 20 time steps each, every later step continues
 // from the acceleration the previous one accepted, so the runs must agree to round-off.
-// Before issue 9 the later steps restarted from an acceleration near zero: with the weight given
-// as a nodal load under a constant history (gravity had no weight in a first dynamic step), the
-// five-step chain ended with a spring force of 8.97 N against 8.21 N (9%). Measured now: equal to
+// A restart of the later steps from an acceleration near zero shows: with the weight given as a
+// nodal load under a constant history (as if gravity had no weight in a first dynamic step), the
+// five-step chain then ends with a spring force of 8.97 N against 8.21 N (9%). Measured: equal to
 // the last bit (0). Tolerance 1e-12 relative: a margin for round-off, not a model difference.
 TEST(StepChain, FiveDynamicStepsGiveTheOneStepResult) {
   const std::string one = runCaseText("chain-one", kPendulum + dynamicStep(100));
@@ -127,7 +127,7 @@ TEST(StepChain, FiveDynamicStepsGiveTheOneStepResult) {
 
 // The same with HHT-alpha (-0.1), whose accepted acceleration is not the equilibrium one of the
 // state (it balances the alpha-weighted forces of two steps): recomputing it at a restart would
-// show here. Before issue 9 (weight as above): 26.06 N against 26.36 N (1.1%). Measured now:
+// show here (weight as above: 26.06 N against 26.36 N, 1.1%). Measured:
 // equal to the last bit. Tolerance 1e-12 relative.
 TEST(StepChain, HhtStepsContinueFromTheAcceptedAcceleration) {
   const std::string hht = ", hht_alpha: -0.1";
@@ -142,8 +142,8 @@ TEST(StepChain, HhtStepsContinueFromTheAcceptedAcceleration) {
 // factor 1, whatever motion the first dynamic step left; the last dynamic step doubles the load
 // factor (the mass is dropped under twice its weight and the side load). Reference: the run
 // that starts from the same equilibrium, static -> dynamic. The tails must agree to round-off
-// (the two static solutions differ by far less than 1e-13, see tightStatic). Before issue 9
-// the static step kept the velocity of the swing (and the chain's first step had no weight).
+// (the two static solutions differ by far less than 1e-13, see tightStatic). A static step
+// that kept the velocity of the swing would fail it (as would a first step without weight).
 // Measured: 3e-16 relative at most. Tolerance 1e-12 relative.
 TEST(StepChain, DynamicStaticDynamicGivesTheTailFromEquilibrium) {
   const std::string tail = dynamicStep(60, ", load_factor: 2");
@@ -157,8 +157,8 @@ TEST(StepChain, DynamicStaticDynamicGivesTheTailFromEquilibrium) {
 
 // A dynamic first step holds load factor 1: a free mass released in it falls with g. Newmark's
 // average acceleration integrates a constant acceleration exactly, so z(t) = -g t^2 / 2 at
-// t = 1 s (100 steps of 0.01 s), -4.905 m, to round-off. Before issue 9: z = 0 (the load factor
-// was 0 and the mass had no weight). Measured: exact (-4.905). Tolerance 1e-12 relative.
+// t = 1 s (100 steps of 0.01 s), -4.905 m, to round-off. At load factor 0 it would stay at z = 0
+// (the mass without weight). Measured: exact (-4.905). Tolerance 1e-12 relative.
 TEST(StepChain, MassReleasedInAFirstDynamicStepFallsWithG) {
   const std::string json = runCaseText("falling-mass", kFallingMass + dynamicStep(100));
   const double z = summaryValue(json, "z");

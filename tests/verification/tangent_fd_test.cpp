@@ -1,5 +1,5 @@
 // Verification of every tangent against central finite differences of the internal force, and of
-// the cable laws against formulation.md.
+// the cable laws against docs/theory.md#cable-laws.
 //
 // Reference: the exact derivative of the element's own internal force, approximated by central
 // differences with a step of 1e-6 times the element's size (truncation ~1e-12, round-off ~1e-10
@@ -324,7 +324,7 @@ TEST(CableMaterial, MaterialTangentMatchesFiniteDifference) {
     }
 }
 
-// Eq. 2.53 and 2.54 as formulation.md writes them in convected components, against the code:
+// Eq. 2.53 and 2.54 as docs/theory.md#cable-laws writes them in convected components, against the code:
 // linear elastic T^11 = E a^11 a^11 gamma11, C^1111 = E (a^11)^2; Mooney-Rivlin
 // T^11 = 2 (C1 + lc^2 C2)(a^11 - lc^2 A^11) with lc^2 = 1 / lambda. Tolerance 1e-13 relative.
 TEST(CableMaterial, ConvectedStressMatchesFormulation) {
@@ -342,7 +342,7 @@ TEST(CableMaterial, ConvectedStressMatchesFormulation) {
   }
 }
 
-// Mooney-Rivlin physical checks (formulation.md): the Cauchy stress of the incompressible cable,
+// Mooney-Rivlin physical checks (docs/theory.md): the Cauchy stress of the incompressible cable,
 // axial force / current area = N lambda / A0, is 2 (lambda^2 - 1/lambda)(C1 + C2 / lambda);
 // zero at lambda = 1; its small-strain Young's modulus d sigma / d lambda at lambda = 1 is
 // 6 (C1 + C2). The linear-elastic force is N = EA lambda (lambda^2 - 1) / 2 with small-strain
