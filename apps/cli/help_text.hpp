@@ -231,7 +231,9 @@ listed in its study_parameters; failed members are left out):
   --psd NAME         every member's response spectrum NAME_psd over the study's frequency axis
 
 Bad arguments (a variable, parameter or time the file does not hold, an option of another
-figure) are named on stderr, exit code 2.
+figure) are named on stderr, exit code 2. The directory of -o is created when it is not there.
+Any other failure (the PNG cannot be written, a Python module is missing) is one line on stderr,
+exit code 4.
 
 Examples:
   flexmoor plot results/driven-taut-cable/driven-taut-cable.nc -o cable.png

@@ -1,24 +1,39 @@
 """Helpers that every figure of `flexmoor plot` shares (flexmoor_plot.py)."""
 import sys
 
-import numpy as np
+BAD_INPUT, FAILED = 2, 4  # the exit codes of flexmoor (README, "Exit codes")
+
+
+def fail(message, code=BAD_INPUT):
+    """Bad input (or, with code FAILED, an output that cannot be written): the message on stderr
+    and the exit code."""
+    print("flexmoor plot: " + message, file=sys.stderr)
+    sys.exit(code)
+
+
+def missing_module(error):
+    """A module of Debian's python3 packages that is not installed: exit code 4."""
+    fail("cannot import %s (%s): it needs Debian's python3-matplotlib and python3-xarray "
+         "(scripts/setup.sh installs them)" % (error.name or "a module", error), FAILED)
+
+
+try:
+    import numpy as np
+except ImportError as e:
+    missing_module(e)
 
 
 def pyplot():
     """matplotlib.pyplot (Agg), imported when a figure is drawn: a refused argument does not wait
     for it."""
-    import matplotlib
+    try:
+        import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot
-
+        matplotlib.use("Agg")
+        import matplotlib.pyplot
+    except ImportError as e:
+        missing_module(e)
     return matplotlib.pyplot
-
-
-def fail(message):
-    """Bad input: the message on stderr and exit code 2."""
-    print("flexmoor plot: " + message, file=sys.stderr)
-    sys.exit(2)
 
 
 def number_text(value):
