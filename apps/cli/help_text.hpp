@@ -199,7 +199,9 @@ inline constexpr const char* kPlotSummary = "draw a figure of a run or a study a
 
 inline constexpr const char* kPlotDetails = R"(
 Draws one figure from RESULT with the file's units, legends and title, using Debian's
-matplotlib (/usr/bin/python3). One kind of figure at a time:
+matplotlib (/usr/bin/python3); forces in N are shown in kN or MN by their magnitude, ticks as
+plain numbers, spectra up to where 99.9% of their energy lies (and a margin). One kind of
+figure at a time:
 
 Of a run (DIR/<case>.nc of 'flexmoor run'):
   --series SPEC ...  time series, one panel each (the default: the largest end tension and the

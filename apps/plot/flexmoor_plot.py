@@ -29,7 +29,8 @@ import os
 import sys
 import textwrap
 
-from plot_common import FAILED, fail, missing_module, number_text, pyplot
+from plot_common import (FAILED, energy_top, fail, in_force_units, missing_module, number_text,
+                         plain_ticks, pyplot)
 
 try:
     import numpy as np
@@ -169,7 +170,8 @@ def draw_series(ds, args):
     dynamic = np.concatenate([[False], np.diff(ds.time.values) > 0])
     for k, ((values, label, units), short) in enumerate(zip(panels, short_names)):
         ax = axes[k][0]
-        t, y = ds.time.values, np.asarray(values)
+        t = ds.time.values
+        y, units = in_force_units(np.asarray(values), units)
         colour = colours[k % len(colours)]
         line = dynamic | np.roll(dynamic, -1)
         ax.plot(t[line], y[line], color=colour, linewidth=1.4, label=textwrap.fill(label, 60))
@@ -177,7 +179,6 @@ def draw_series(ds, args):
             ax.plot(t[~dynamic], y[~dynamic], "o", color=colour, markersize=3.5,
                     label="end of a static step" if k == 0 else None)
         ax.set_ylabel("%s [%s]" % (short, units) if units else short)
-        ax.ticklabel_format(axis="y", useOffset=False)
         ax.grid(True, alpha=0.3)
         ax.legend(loc="best", fontsize="small", frameon=False)
     axes[-1][0].set_xlabel("time [%s]" % time_units)
@@ -281,6 +282,7 @@ def draw_spectrum(ds, args):
     name, selection = parse_spec(args.spectrum)
     values, label, units = select(ds, name, selection)
     x, dt = last_dynamic_record(ds, values, args.start)
+    x, units = in_force_units(x, units)
     time_units = ds.time.attrs.get("units", "s")
     duration = x.size * dt
     segment_time = args.segment if args.segment is not None else duration / 4.0
@@ -299,14 +301,18 @@ def draw_spectrum(ds, args):
     ax.plot(omega, density, color="C0", linewidth=1.3, label=textwrap.fill(estimate, 70))
     length_units = ds["position_x"].attrs.get("units", "m") if "position_x" in ds else "m"
     target = target_spectrum(ds.attrs, length_units, time_units)
-    top = omega[-1]
+    # The frequency axis ends where the energy is (99.9% of it, and a margin): the estimate's
+    # or the target's within the synthesised band, whichever is further.
+    top = energy_top(omega, density)
     if target is not None:
         function, target_label = target
         w = np.linspace(omega[1] * 0.5, omega[-1], 2000)
         band = np.atleast_1d(ds.attrs.get("sea_spectrum_band", [0.0, omega[-1]]))
-        if units == length_units:  # an elevation or a motion: up to a little past the band
+        sea = w[w <= band[-1]]
+        if sea.size > 1:
+            top = max(top, energy_top(sea, function(sea)))
+        if units == length_units:  # an elevation or a motion: on the estimate's axis
             twin = ax
-            top = min(omega[-1], 1.25 * band[-1])
         else:  # another quantity, all its frequencies: the target on its own axis at the right
             twin = ax.twinx()
             twin.set_ylabel("target wave spectrum [%s2 %s rad-1]" % (length_units, time_units))
@@ -466,6 +472,7 @@ def main(argv):
     figure, what = (STUDY_KINDS if study else RUN_KINDS)[kind](ds, args)
     title = args.title or ds.attrs.get("title", ds.attrs.get("case_name", ""))
     figure.suptitle(title, fontsize="medium")
+    plain_ticks(figure)
     try:
         figure.savefig(args.output, dpi=130)
     except OSError as e:
