@@ -12,7 +12,9 @@ A case is one YAML file that states a whole problem: its unit system, materials 
 the mesh (lines, surfaces, nodes, elements), supports, loads and load histories, the analysis
 steps to run in order and the summary quantities to report. CASE is the path of such a file or
 the name of a case shipped under cases/: its file name without .yaml, for example
-ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles).
+ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles); '.yaml' may be
+left off a path too. A name that is not there is refused with the nearest ones ("did you
+mean ...?").
 
 Units: a case states `units: US` (ft, slug, s; forces in lbf) or `units: SI` (m, kg, s; N).
 Any value may carry its own unit ("0.163 in", "500000 psi", "9.81 m/s^2") and is

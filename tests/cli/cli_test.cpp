@@ -74,7 +74,7 @@ TEST(Cli, HelpTeachesTheCommands) {
                 "DIR/<case>.summary.json", "results/<case>/", "Exit codes", "Examples", "COMMAND --help"});
 }
 
-// Issue 9: `run --help` said "no case file or named case '--help'". Every command has its help.
+// `run --help` once said "no case file or named case '--help'". Every command has its help.
 TEST(Cli, EveryCommandHasItsOwnHelp) {
   const CliRun run = flexmoor("run --help");
   EXPECT_EQ(run.exit_code, 0) << run.output;
@@ -82,6 +82,7 @@ TEST(Cli, EveryCommandHasItsOwnHelp) {
                   "Loads from step to step", "load_factor", "results/<case>/",
                   "DIR/<case>.nc", "Exit codes", "Examples"});
   EXPECT_EQ(run.output.find("no case file"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("no case '"), std::string::npos) << run.output;
 
   const CliRun check = flexmoor("check --help");
   EXPECT_EQ(check.exit_code, 0) << check.output;
