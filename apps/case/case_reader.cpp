@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/nearest_names.hpp"
 #include "apps/case/scenario.hpp"
 #include "apps/case/yaml_load.hpp"
 
@@ -130,16 +131,36 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
 
 std::string resolveCasePath(const std::string& name_or_path) {
   if (fs::is_regular_file(name_or_path)) return name_or_path;
+  if (fs::is_regular_file(name_or_path + ".yaml")) return name_or_path + ".yaml";
+  const bool yaml = fs::path(name_or_path).extension() == ".yaml";
+  const std::string name = yaml ? fs::path(name_or_path).stem().string()
+                                : fs::path(name_or_path).filename().string();
+  if (name_or_path.find('/') != std::string::npos) {  // a path: the files next to it
+    const fs::path directory = fs::path(name_or_path).parent_path();
+    std::vector<std::string> stems, files;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(directory, ec))
+      if (entry.is_regular_file() && entry.path().extension() == ".yaml")
+        stems.push_back(entry.path().stem().string());
+    std::sort(stems.begin(), stems.end());
+    for (const std::string& stem : nearestNames(name, stems))
+      files.push_back((directory / stem).string() + (yaml ? ".yaml" : ""));
+    throw std::runtime_error("no case file '" + name_or_path + "'" + didYouMean(files));
+  }
   std::vector<fs::path> matches;
-  std::string available;
+  std::vector<std::string> names;
   for (const fs::path& file : caseFiles()) {
-    if (file.stem() == name_or_path) matches.push_back(file);
-    available += (available.empty() ? "" : ", ") + file.stem().string();
+    if (file.stem() == name) matches.push_back(file);
+    names.push_back(file.stem().string());
   }
   if (matches.size() == 1) return matches.front().string();
-  if (matches.empty())
-    throw std::runtime_error("no case file or named case '" + name_or_path +
-                             "' (available: " + (available.empty() ? "none" : available) + ")");
+  if (matches.empty()) {
+    const std::string near = didYouMean(nearestNames(name, names));
+    throw std::runtime_error("no case '" + name_or_path + "'" +
+                             (near.empty() ? " (no such file, nor a case of that name under "
+                                             "cases/: 'flexmoor cases' lists them)"
+                                           : near));
+  }
   std::string where;
   for (const fs::path& m : matches) where += (where.empty() ? "" : ", ") + m.string();
   throw std::runtime_error("case name '" + name_or_path + "' is ambiguous: " + where);

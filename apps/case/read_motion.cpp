@@ -1,14 +1,11 @@
 #include "apps/case/read_motion.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <sstream>
 
+#include "apps/case/motion_file.hpp"
 #include "apps/case/units.hpp"
 #include "libstruct/model/cubic_spline_function.hpp"
 
@@ -62,84 +59,46 @@ std::shared_ptr<const model::TimeFunction> readTable(Input& in, Fields& f,
   return spline(in, table, path, std::move(s));
 }
 
-std::vector<std::string> splitFields(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream ss(line);
-  std::string field;
-  while (std::getline(ss, field, ',')) {
-    const auto first = field.find_first_not_of(" \t\r");
-    const auto last = field.find_last_not_of(" \t\r");
-    fields.push_back(first == std::string::npos ? "" : field.substr(first, last - first + 1));
+// A column as `key` gives it: a whole number (1-based) or a name.
+std::optional<MotionColumn> readColumn(Input& in, const YAML::Node& n, const std::string& path) {
+  if (n.IsScalar() && !n.Scalar().empty() &&
+      n.Scalar().find_first_not_of("+-0123456789") == std::string::npos) {
+    const auto number = in.integer(n, path + " (a column number, 1-based)", 1);
+    if (!number) return std::nullopt;
+    return MotionColumn::numbered(*number);
   }
-  return fields;
+  const auto name = in.text(n, path);
+  if (!name) return std::nullopt;
+  return MotionColumn::named(*name);
 }
 
-// The columns `time` and `column` of a comma-separated file (errors at `at`, the file's line in
-// the message).
+// The columns `time` and `column` of `file` (errors at `at`, the file's line in the message).
 std::optional<Samples> readColumns(Input& in, const YAML::Node& at, const std::string& path,
-                                   const fs::path& file, const std::string& time,
-                                   const std::string& column, double scale) {
+                                   const fs::path& file, const MotionColumn& time,
+                                   const MotionColumn& column) {
   std::ifstream stream(file);
   if (!stream) {
     in.diag.error(at, path + ": cannot read " + file.string() +
                           " (expected a file of time series, relative to the case file)");
     return std::nullopt;
   }
-  const auto fail = [&](int line, const std::string& what) {
-    in.diag.error(
-        at, path + ": " + file.filename().string() + " line " + std::to_string(line) + ": " + what);
+  MotionSeries series = readMotionColumns(stream, time, column);
+  if (series.problem) {
+    in.diag.error(at, path + ": " + file.filename().string() + " line " +
+                          std::to_string(series.problem->line) + ": " + series.problem->what);
     return std::nullopt;
-  };
-  Samples s;
-  std::string line;
-  int number = 0, time_index = -1, value_index = -1;
-  bool header = true;
-  while (std::getline(stream, line)) {
-    ++number;
-    if (line.find_first_not_of(" \t\r") == std::string::npos ||
-        line[line.find_first_not_of(" \t")] == '#')
-      continue;
-    const std::vector<std::string> fields = splitFields(line);
-    if (header) {
-      header = false;
-      for (size_t k = 0; k < fields.size(); ++k) {
-        if (fields[k] == time) time_index = static_cast<int>(k);
-        if (fields[k] == column) value_index = static_cast<int>(k);
-      }
-      std::string names;
-      for (const std::string& name : fields) names += (names.empty() ? "" : ", ") + name;
-      if (time_index < 0) return fail(number, "no column '" + time + "' (got " + names + ")");
-      if (value_index < 0) return fail(number, "no column '" + column + "' (got " + names + ")");
-      continue;
-    }
-    double row[2];
-    for (int k = 0; k < 2; ++k) {
-      const int index = k == 0 ? time_index : value_index;
-      if (index >= static_cast<int>(fields.size()))
-        return fail(number, "too few fields (got " + std::to_string(fields.size()) +
-                                ", expected column " + std::to_string(index + 1) + ")");
-      const std::string& text = fields[index];
-      char* end = nullptr;
-      errno = 0;
-      row[k] = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(row[k]))
-        return fail(number,
-                    "not a number (got '" + text + "' in column " + (k == 0 ? time : column) + ")");
-    }
-    s.times.push_back(row[0]);
-    s.values.push_back(scale * row[1]);
   }
-  if (header) return fail(number, "no header line (expected the column names)");
-  return s;
+  return Samples{std::move(series.times), std::move(series.values)};
 }
 
 std::shared_ptr<const model::TimeFunction> readFile(Input& in, Fields& f, const QuantityKind& kind,
                                                     const std::string& case_file) {
   const YAML::Node* c = f.require("column");
   const auto name = in.text(*f.find("file"), f.path("file"));
-  const auto column = c ? in.text(*c, f.path("column")) : std::nullopt;
-  std::optional<std::string> time = std::string("time");
-  if (const YAML::Node* t = f.find("time_column")) time = in.text(*t, f.path("time_column"));
+  const auto column = c ? readColumn(in, *c, f.path("column")) : std::nullopt;
+  std::optional<MotionColumn> time = MotionColumn{};  // `time`, or column 1 without a header
+  if (const YAML::Node* t = f.find("time_column")) time = readColumn(in, *t, f.path("time_column"));
+  const double offset = in.quantityOr(f, "time_offset", kind::kTime, Limit::Any, 0.0);
   double scale = 1.0;
   if (const YAML::Node* u = f.find("unit")) {  // the value of one of that unit
     const auto unit = in.text(*u, f.path("unit"));
@@ -156,8 +115,10 @@ std::shared_ptr<const model::TimeFunction> readFile(Input& in, Fields& f, const 
   }
   if (!name || !column || !time) return nullptr;
   const fs::path file = fs::path(case_file).parent_path() / *name;
-  auto samples = readColumns(in, *f.find("file"), f.path("file"), file, *time, *column, scale);
+  auto samples = readColumns(in, *f.find("file"), f.path("file"), file, *time, *column);
   if (!samples) return nullptr;
+  for (double& t : samples->times) t += offset;
+  for (double& v : samples->values) v *= scale;
   return spline(in, *f.find("file"), f.path("file") + " (" + *name + ")", std::move(*samples));
 }
 
@@ -185,7 +146,7 @@ std::shared_ptr<const model::TimeFunction> readMotion(Input& in, const YAML::Nod
     return readTable(in, f, kind);
   }
   if (n.IsMap() && n["file"]) {
-    Fields f(in.diag, n, path, {"file", "column", "time_column", "unit"});
+    Fields f(in.diag, n, path, {"file", "column", "time_column", "time_offset", "unit"});
     return readFile(in, f, kind, case_file);
   }
   Fields f(in.diag, n, path, {"amplitude", "period", "phase"});

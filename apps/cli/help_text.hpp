@@ -12,7 +12,9 @@ A case is one YAML file that states a whole problem: its unit system, materials 
 the mesh (lines, surfaces, nodes, elements), supports, loads and load histories, the analysis
 steps to run in order and the summary quantities to report. CASE is the path of such a file or
 the name of a case shipped under cases/: its file name without .yaml, for example
-ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles).
+ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles); '.yaml' may be
+left off a path too. A name that is not there is refused with the nearest ones ("did you
+mean ...?").
 
 Units: a case states `units: US` (ft, slug, s; forces in lbf) or `units: SI` (m, kg, s; N).
 Any value may carry its own unit ("0.163 in", "500000 psi", "9.81 m/s^2") and is
@@ -199,7 +201,9 @@ inline constexpr const char* kPlotSummary = "draw a figure of a run or a study a
 
 inline constexpr const char* kPlotDetails = R"(
 Draws one figure from RESULT with the file's units, legends and title, using Debian's
-matplotlib (/usr/bin/python3). One kind of figure at a time:
+matplotlib (/usr/bin/python3); forces in N are shown in kN or MN by their magnitude, ticks as
+plain numbers, spectra up to where 99.9% of their energy lies (and a margin). One kind of
+figure at a time:
 
 Of a run (DIR/<case>.nc of 'flexmoor run'):
   --series SPEC ...  time series, one panel each (the default: the largest end tension and the
@@ -231,7 +235,9 @@ listed in its study_parameters; failed members are left out):
   --psd NAME         every member's response spectrum NAME_psd over the study's frequency axis
 
 Bad arguments (a variable, parameter or time the file does not hold, an option of another
-figure) are named on stderr, exit code 2.
+figure) are named on stderr, exit code 2. The directory of -o is created when it is not there.
+Any other failure (the PNG cannot be written, a Python module is missing) is one line on stderr,
+exit code 4.
 
 Examples:
   flexmoor plot results/driven-taut-cable/driven-taut-cable.nc -o cable.png

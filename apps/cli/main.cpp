@@ -112,7 +112,14 @@ int study(const std::string& file, const StudyOptions& options) {
     if (launchedByMpi())
       return runStudyUnderMpi(namedPath(file), options.output_dir, options.workers, std::cout);
 #endif
-    const std::optional<Study> s = readNamedStudy(namedPath(file));
+    std::string path;
+    try {
+      path = resolveCasePath(file);
+    } catch (const std::exception& e) {  // no such file: the nearest names
+      std::cerr << "flexmoor: " << e.what() << "\n";
+      return kBadInput;
+    }
+    const std::optional<Study> s = readNamedStudy(path);
     if (!s) return kBadInput;
     return runStudy(*s, options, std::cout);
   } catch (const std::exception& e) {

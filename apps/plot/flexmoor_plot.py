@@ -18,17 +18,26 @@ SPEC is VARIABLE@INDEX, for example
     speed@node=5                 |velocity| of node 5 (derived from velocity_x/_y/_z)
     tension_end@element=1,end=1  axial force at the first end of element 1
     wave_elevation               a record variable without an index
-Units and names come from the files' CF attributes. Bad arguments: a message naming what is
-wrong, exit code 2.
+Units and names come from the files' CF attributes. Bad arguments (a variable the file does
+not hold among them): a message naming what is wrong, exit code 2. A figure that cannot be
+written, a Python module missing or any other failure: a one-line message, exit code 4; never a
+traceback. The directory of -o is created when it does not exist.
 """
 import argparse
+import errno
+import os
 import sys
 import textwrap
 
-import numpy as np
-import xarray as xr
+from plot_common import (FAILED, energy_top, fail, in_force_units, missing_module, number_text,
+                         plain_ticks, pyplot)
 
-from plot_common import fail, number_text, pyplot
+try:
+    import numpy as np
+    import xarray as xr
+except ImportError as e:
+    missing_module(e)
+
 from study_figures import draw_extremes, draw_psd, draw_rao
 
 
@@ -67,16 +76,23 @@ def select(ds, name, selection):
     positional = {k: v for k, v in where.items() if k == "end"}
     labelled = {k: v for k, v in where.items() if k != "end"}
     if name == "speed":
-        parts = [ds["velocity" + a].sel(labelled) for a in ("_x", "_y", "_z")]
+        components = ["velocity" + a for a in ("_x", "_y", "_z")]
+        absent = [c for c in components if c not in ds]
+        if absent:
+            fail("speed is |velocity| and needs velocity_x, _y and _z; the file does not hold "
+                 "%s (the case's output: fields: leaves out velocity)" % ", ".join(absent))
+        require_indices(ds[components[0]], "speed", where)
+        parts = [ds[c].sel(labelled) for c in components]
         values = np.sqrt(sum(p ** 2 for p in parts))
         units = ds["velocity_x"].attrs.get("units", "")
         long_name = "speed"
     elif name in ds:
+        require_indices(ds[name], name, where)
         values = ds[name].sel(labelled).isel(positional)
         units = ds[name].attrs.get("units", "")
         long_name = ds[name].attrs.get("long_name", name)
     else:
-        fail("no variable '%s' in the file" % name)
+        fail("no variable '%s' in the file (its series: %s)" % (name, record_variables(ds)))
     if set(values.dims) - {"time"}:
         fail("%s needs an index for %s" % (name, ", ".join(sorted(set(values.dims) - {"time"}))))
     where_text = ", ".join("%s %d" % kv for kv in selection.items())
@@ -84,13 +100,43 @@ def select(ds, name, selection):
     return values, label, units
 
 
+def require_indices(variable, name, where):
+    """Every index of a SPEC must be a dimension of its variable."""
+    extra = sorted(set(where) - set(variable.dims))
+    if extra:
+        fail("%s has no %s index (its dimensions: %s)" %
+             (name, " or ".join(extra), ", ".join(variable.dims)))
+
+
+def record_variables(ds):
+    """The variables over time that the file holds, for a message; "none" when there are none."""
+    names = sorted(n for n in ds.data_vars if "time" in ds[n].dims)
+    return ", ".join(names) or "none"
+
+
 def default_specs(ds):
+    """The default figure's panels, those the file can give: the largest end tension (needs
+    tension_end) and the displacement of the node that moves most (displacement_x, _y, _z)."""
     specs = []
     if "tension_end" in ds:
         specs.append(("max_tension", {}))
-    moved = np.sqrt(ds.displacement_x ** 2 + ds.displacement_y ** 2 + ds.displacement_z ** 2)
-    node = int(moved.max("time").argmax())
-    specs.append(("displacement_magnitude", {"node": int(ds.node[node])}))
+    displacement = ["displacement" + a for a in ("_x", "_y", "_z")]
+    if all(d in ds for d in displacement):
+        moved = np.sqrt(sum(ds[d] ** 2 for d in displacement))
+        node = int(moved.max("time").argmax())
+        specs.append(("displacement_magnitude", {"node": int(ds.node[node])}))
+    left_out = [what for what, present in (
+        ("the largest end tension (no tension_end)", "tension_end" in ds),
+        ("the displacement of the node that moves most (no displacement_x, _y, _z)",
+         all(d in ds for d in displacement))) if not present]
+    if not specs:
+        fail("the default figure draws the largest end tension and the displacement of the node "
+             "that moves most, and the file has neither tension_end nor displacement_x, _y, _z "
+             "(the case's output: fields: leaves out tension and displacement); choose series "
+             "with --series VARIABLE@node=N (the file's: %s)" % record_variables(ds))
+    for what in left_out:
+        print("flexmoor plot: the default figure leaves out %s: the case's output: fields: did "
+              "not write it" % what, file=sys.stderr)
     return specs
 
 
@@ -105,6 +151,8 @@ def default_series(ds, name, selection):
 
 
 def draw_series(ds, args):
+    if ds.sizes.get("time", 0) == 0:
+        fail("%s holds no records (no time)" % args.result)
     specs = [parse_spec(s) for s in args.series]
     panels, short_names = [], []
     for name, selection in specs or default_specs(ds):
@@ -122,7 +170,8 @@ def draw_series(ds, args):
     dynamic = np.concatenate([[False], np.diff(ds.time.values) > 0])
     for k, ((values, label, units), short) in enumerate(zip(panels, short_names)):
         ax = axes[k][0]
-        t, y = ds.time.values, np.asarray(values)
+        t = ds.time.values
+        y, units = in_force_units(np.asarray(values), units)
         colour = colours[k % len(colours)]
         line = dynamic | np.roll(dynamic, -1)
         ax.plot(t[line], y[line], color=colour, linewidth=1.4, label=textwrap.fill(label, 60))
@@ -130,11 +179,10 @@ def draw_series(ds, args):
             ax.plot(t[~dynamic], y[~dynamic], "o", color=colour, markersize=3.5,
                     label="end of a static step" if k == 0 else None)
         ax.set_ylabel("%s [%s]" % (short, units) if units else short)
-        ax.ticklabel_format(axis="y", useOffset=False)
         ax.grid(True, alpha=0.3)
         ax.legend(loc="best", fontsize="small", frameon=False)
     axes[-1][0].set_xlabel("time [%s]" % time_units)
-    return figure, "%d panels" % len(panels)
+    return figure, "%d panel%s" % (len(panels), "" if len(panels) == 1 else "s")
 
 
 # --------------------------------------------------------------------------------------------
@@ -234,6 +282,7 @@ def draw_spectrum(ds, args):
     name, selection = parse_spec(args.spectrum)
     values, label, units = select(ds, name, selection)
     x, dt = last_dynamic_record(ds, values, args.start)
+    x, units = in_force_units(x, units)
     time_units = ds.time.attrs.get("units", "s")
     duration = x.size * dt
     segment_time = args.segment if args.segment is not None else duration / 4.0
@@ -252,14 +301,18 @@ def draw_spectrum(ds, args):
     ax.plot(omega, density, color="C0", linewidth=1.3, label=textwrap.fill(estimate, 70))
     length_units = ds["position_x"].attrs.get("units", "m") if "position_x" in ds else "m"
     target = target_spectrum(ds.attrs, length_units, time_units)
-    top = omega[-1]
+    # The frequency axis ends where the energy is (99.9% of it, and a margin): the estimate's
+    # or the target's within the synthesised band, whichever is further.
+    top = energy_top(omega, density)
     if target is not None:
         function, target_label = target
         w = np.linspace(omega[1] * 0.5, omega[-1], 2000)
         band = np.atleast_1d(ds.attrs.get("sea_spectrum_band", [0.0, omega[-1]]))
-        if units == length_units:  # an elevation or a motion: up to a little past the band
+        sea = w[w <= band[-1]]
+        if sea.size > 1:
+            top = max(top, energy_top(sea, function(sea)))
+        if units == length_units:  # an elevation or a motion: on the estimate's axis
             twin = ax
-            top = min(omega[-1], 1.25 * band[-1])
         else:  # another quantity, all its frequencies: the target on its own axis at the right
             twin = ax.twinx()
             twin.set_ylabel("target wave spectrum [%s2 %s rad-1]" % (length_units, time_units))
@@ -404,6 +457,7 @@ def main(argv):
             fail("--%s is an option of %s, not of --%s" % (
                 option.replace("_", "-").replace("start", "from"),
                 " and ".join("--" + o for o in owners.split()), kind))
+    output_directory(args.output)
     try:
         ds = xr.open_dataset(args.result)
     except (OSError, ValueError) as e:
@@ -418,10 +472,42 @@ def main(argv):
     figure, what = (STUDY_KINDS if study else RUN_KINDS)[kind](ds, args)
     title = args.title or ds.attrs.get("title", ds.attrs.get("case_name", ""))
     figure.suptitle(title, fontsize="medium")
-    figure.savefig(args.output, dpi=130)
+    plain_ticks(figure)
+    try:
+        figure.savefig(args.output, dpi=130)
+    except OSError as e:
+        fail("cannot write %s (%s)" % (args.output, e.strerror or e), FAILED)
     print("flexmoor plot: wrote %s (%s)" % (args.output, what))
     return 0
 
 
+def output_directory(png):
+    """-o names a file; its directory is created when it does not exist."""
+    if os.path.isdir(png):
+        fail("-o %s is a directory (expected the PNG file to write, like %s)"
+             % (png, os.path.join(png, "figure.png")))
+    directory = os.path.dirname(png)
+    if directory and not os.path.isdir(directory):
+        try:
+            os.makedirs(directory)
+        except OSError as e:
+            reason = ("a file of that name is in the way" if e.errno in (errno.EEXIST,
+                                                                          errno.ENOTDIR)
+                      else e.strerror or str(e))
+            fail("-o %s: cannot create the directory %s (%s)" % (png, directory, reason), FAILED)
+
+
+def guarded(argv):
+    """main, with any failure it did not foresee as one line and exit code 4 (not a traceback)."""
+    try:
+        return main(argv)
+    except MemoryError:
+        fail("out of memory", FAILED)
+    except Exception as e:  # SystemExit (fail, --help) and KeyboardInterrupt pass
+        text = " ".join(str(e).split()) or "no message"
+        fail("internal error, the figure was not drawn (%s: %s)" % (type(e).__name__, text),
+             FAILED)
+
+
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(guarded(sys.argv[1:]))

@@ -5,7 +5,7 @@ import textwrap
 
 import numpy as np
 
-from plot_common import fail, number_text, pyplot, value_text
+from plot_common import energy_top, fail, in_force_units, number_text, pyplot, value_text
 
 
 def study_parameters(ds):
@@ -34,9 +34,10 @@ def require_statistic(ds, name, statistic):
     return ds[variable]
 
 
-def axis_label(variable, fallback):
+def axis_label(variable, fallback, units=None):
+    """'NAME [UNITS]' of a variable, its own units unless `units` is given."""
     name = variable.attrs.get("long_name", variable.attrs.get("flexmoor_path", fallback))
-    units = variable.attrs.get("units", "")
+    units = variable.attrs.get("units", "") if units is None else units
     return "%s [%s]" % (name, units) if units else name
 
 
@@ -92,9 +93,8 @@ def draw_rao(ds, args):
     parameter = require_parameter(ds, args.against, "--rao")
     amplitude = require_statistic(ds, args.rao, "amplitude")
     x = np.asarray(parameter.values, dtype=float)
-    y = np.asarray(amplitude.values, dtype=float)
-    units = amplitude.attrs.get("units", "")
-    ylabel = axis_label(amplitude, args.rao + " amplitude")
+    y, units = in_force_units(amplitude.values, amplitude.attrs.get("units", ""))
+    ylabel = axis_label(amplitude, args.rao + " amplitude", units)
     if args.wave_height is not None:
         half, height_units = wave_amplitude(ds, args.wave_height)
         y = y / half
@@ -133,8 +133,10 @@ def draw_extremes(ds, args):
     plt = pyplot()
     figure, ax = plt.subplots(figsize=(8.0, 5.0), constrained_layout=True)
     groups = groups_of(ds, args.group, "--extremes")
+    every = np.concatenate([np.asarray(v.values, dtype=float) for v, _, _ in statistics])
+    largest = np.abs(every[np.isfinite(every)]).max() if np.isfinite(every).any() else 0.0
     for s, (variable, marker, title) in enumerate(statistics):
-        y = np.asarray(variable.values, dtype=float)
+        y, units = in_force_units(variable.values, variable.attrs.get("units", ""), largest)
         valid = ok & np.isfinite(y)
         for k, (label, members) in enumerate(groups):
             chosen = valid & members
@@ -146,8 +148,7 @@ def draw_extremes(ds, args):
         ax.plot(levels, means, "-" if s == 0 else "--", color="0.25", linewidth=1.5,
                 label="%s, mean%s" % (title, " over the groups" if args.group else ""))
     ax.set_xlabel(axis_label(parameter, args.against))
-    first = statistics[0][0]
-    ax.set_ylabel("%s [%s]" % (args.extremes, first.attrs.get("units", "")))
+    ax.set_ylabel("%s [%s]" % (args.extremes, units))
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize="small", frameon=False, ncol=2 if len(groups) > 3 else 1)
     return figure, "extremes of %d members" % ok.sum()
@@ -159,14 +160,25 @@ def draw_psd(ds, args):
         fail("the study has no 'frequency' axis for %s_psd" % args.psd)
     omega = np.asarray(ds.frequency.values, dtype=float)
     ok = complete(ds)
+    spectra = np.asarray(psd.values, dtype=float)
+    # Forces in kN or MN as in the other figures: chosen from the largest maximum when it was
+    # collected, else from the largest 4 sqrt(m0).
+    maximum = "%s_max" % args.psd
+    if maximum in ds and np.isfinite(ds[maximum].values).any():
+        largest = np.nanmax(np.abs(ds[maximum].values))
+    else:
+        m0 = np.nansum(np.where(spectra > 0.0, spectra, 0.0), axis=-1) * (omega[1] - omega[0] if omega.size > 1 else 1.0)
+        largest = 4.0 * np.sqrt(np.max(m0)) if m0.size else 0.0
+    spectra, units = in_force_units(spectra, psd.attrs.get("units", ""), largest)
     plt = pyplot()
     figure, ax = plt.subplots(figsize=(8.0, 4.8), constrained_layout=True)
     colours = plt.cm.viridis(np.linspace(0.0, 0.9, max(1, ok.sum())))
-    drawn = 0
+    drawn, top = 0, omega.min()
     for member in np.flatnonzero(ok):
-        values = np.asarray(psd.values[member], dtype=float)
+        values = spectra[member]
         if not np.isfinite(values).any():
             continue
+        top = max(top, energy_top(omega, values))
         number = int(ds.member.values[member]) if "member" in ds else member + 1
         ax.plot(omega, values, color=colours[drawn], linewidth=1.2,
                 label=textwrap.fill("member %d: %s" % (number, parameter_text(ds, member)), 50))
@@ -174,8 +186,8 @@ def draw_psd(ds, args):
     if drawn == 0:
         fail("no complete member has %s_psd" % args.psd)
     ax.set_xlabel(axis_label(ds.frequency, "circular frequency"))
-    ax.set_ylabel("%s spectral density [%s]" % (args.psd, psd.attrs.get("units", "")))
-    ax.set_xlim(omega.min(), omega.max())
+    ax.set_ylabel("%s spectral density [%s]" % (args.psd, units))
+    ax.set_xlim(omega.min(), top)
     ax.set_ylim(bottom=0.0)
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize="small", frameon=False, ncol=2 if drawn > 6 else 1)

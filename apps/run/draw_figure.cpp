@@ -53,7 +53,11 @@ bool drawFigure(const FigureSpec& figure, const std::string& case_title, const s
   }
   std::error_code ec;
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(temporary, ec)) {
-    diag << "flexmoor: the figure was not drawn (flexmoor plot failed; its message is above)\n";
+    const std::string how = WIFEXITED(status)
+                                ? "exited with " + std::to_string(WEXITSTATUS(status))
+                                : "was killed by signal " + std::to_string(WTERMSIG(status));
+    diag << "flexmoor: the figure " << png << " was not drawn (flexmoor plot " << how
+         << "; its message is above); the results are complete\n";
     fs::remove(temporary, ec);
     return false;
   }

@@ -82,6 +82,7 @@ TEST(Cli, EveryCommandHasItsOwnHelp) {
                   "Loads from step to step", "load_factor", "results/<case>/",
                   "DIR/<case>.nc", "Exit codes", "Examples"});
   EXPECT_EQ(run.output.find("no case file"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("no case '"), std::string::npos) << run.output;
 
   const CliRun check = flexmoor("check --help");
   EXPECT_EQ(check.exit_code, 0) << check.output;

@@ -4,7 +4,8 @@
 // 2 sin(2 pi t / 10 s) m, a 20 s dynamic run. The sine's run is the reference; the table's
 // differs by the spline's error alone (tests/unit/cubic_spline_function_test.cpp: at a spacing h
 // = 0.25 s, 1.4e-5 m in position and 3.8e-4 m/s in velocity at most), and the file's (the same
-// samples) is the table's.
+// samples) is the table's, and so is that of a tab-separated file without a header whose times
+// are 100 s later (MoorDyn's and OpenFAST's layout: columns by number, time_offset: -100 s).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -55,9 +56,10 @@ std::vector<std::pair<double, double>> samples() {
   return s;
 }
 
-std::string run(const std::string& name, const std::string& surge, const std::string& csv = "") {
+std::string run(const std::string& name, const std::string& surge, const std::string& csv = "",
+                const std::string& file_name = "motion.csv") {
   const auto dir = scratch(name);
-  if (!csv.empty()) std::ofstream(dir / "motion.csv") << csv;
+  if (!csv.empty()) std::ofstream(dir / file_name) << csv;
   const CliRun r = runText(dir, name, std::regex_replace(kCase, std::regex("SURGE"), surge));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return readSummary(dir);
@@ -93,6 +95,29 @@ TEST(PlatformMotionTable, TableAndFileReproduceTheSine) {
     EXPECT_NEAR(summaryValue(filed, key), summaryValue(tabled, key),
                 1e-12 * std::abs(summaryValue(tabled, key)))
         << key;
+}
+
+// The samples of the table above in a tab-separated file without a header, time 100 s on in
+// column 1, the surge in column 3, leading blanks and a '#' comment; `time_offset: -100 s` puts
+// them at the table's times (exactly: multiples of 0.25 s plus 100), so the run is the table's.
+TEST(PlatformMotionTable, TabSeparatedFileWithoutAHeaderIsTheTable) {
+  std::ostringstream table, tabs;
+  table << "{table: [";
+  tabs << "# t (s)\theave (m)\tsurge (m), 100 s into a run\n";
+  for (const auto& [t, x] : samples()) {
+    table << (t > 0.0 ? ", " : "") << "[" << t << " s, " << std::setprecision(17) << x << " m]";
+    tabs << "  " << std::setprecision(17) << t + 100.0 << "\t0.0\t" << x << "\n";
+  }
+  table << "]}";
+  const std::string tabled = run("surge-table-2", table.str());
+  const std::string filed = run("surge-tabs", "{file: motion.dat, column: 3, time_offset: -100 s}",
+                                tabs.str(), "motion.dat");
+  for (const char* key :
+       {"x_at_7_3", "v_at_7_3", "x_at_16", "v_at_16", "tension_max", "tension_min"})
+    EXPECT_NEAR(summaryValue(filed, key), summaryValue(tabled, key),
+                1e-12 * std::abs(summaryValue(tabled, key)))
+        << key;
+  EXPECT_NEAR(summaryValue(filed, "x_at_7_3"), 5.2 + 2.0 * std::sin(2.0 * kPi * 0.73), 4.1e-6);
 }
 
 }  // namespace
