@@ -133,8 +133,8 @@ std::string resolveCasePath(const std::string& name_or_path) {
   if (fs::is_regular_file(name_or_path)) return name_or_path;
   if (fs::is_regular_file(name_or_path + ".yaml")) return name_or_path + ".yaml";
   const bool yaml = fs::path(name_or_path).extension() == ".yaml";
-  const std::string name = yaml ? fs::path(name_or_path).stem().string()
-                                : fs::path(name_or_path).filename().string();
+  const std::string name =
+      yaml ? fs::path(name_or_path).stem().string() : fs::path(name_or_path).filename().string();
   if (name_or_path.find('/') != std::string::npos) {  // a path: the files next to it
     const fs::path directory = fs::path(name_or_path).parent_path();
     std::vector<std::string> stems, files;

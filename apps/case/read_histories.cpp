@@ -101,9 +101,8 @@ std::shared_ptr<const model::TimeFunction> readHistory(CaseBuilder& b, const Map
            : type == "ramp"  ? std::vector<std::string>{"type", "start", "duration"}
            : type == "table" ? std::vector<std::string>{"type", "times", "values"}
            : type == "rigid_point"
-               ? std::vector<std::string>{"type", "arm",   "component", "offset", "surge",
-                                          "sway", "heave", "roll",      "pitch",  "yaw",
-                                          "ramp"}
+               ? std::vector<std::string>{"type", "arm", "component", "offset", "surge", "sway",
+                                          "heave", "roll", "pitch", "yaw", "ramp"}
                : std::vector<std::string>{"type"});
   const YAML::Node* t = f.require("type");
   if (!t) return nullptr;

@@ -313,7 +313,8 @@ const std::vector<std::string>& keysOf(StepSpec::Kind kind) {
   };
   static const std::vector<std::string> relax = {
       "name",      "load_factor",        "tolerance", "damping",        "initial_damping_factor",
-      "decrement", "residual_tolerance", "max_steps", "max_iterations", "release", "waves"};
+      "decrement", "residual_tolerance", "max_steps", "max_iterations", "release",
+      "waves"};
   static const std::vector<std::string> statics =
       with({"name", "load_factor", "increments", "control", "psi", "desired_iterations",
             "max_increments", "pressure_stiffness", "release", "waves"});

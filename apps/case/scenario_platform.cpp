@@ -12,7 +12,8 @@ const char* const kMotions[] = {"surge", "sway", "heave", "roll", "pitch", "yaw"
 }  // namespace
 
 std::optional<PlatformMotion> readPlatform(Input& in, const YAML::Node& n) {
-  Fields f(in.diag, n, "platform", {"reference", "surge", "sway", "heave", "roll", "pitch", "yaw", "ramp"});
+  Fields f(in.diag, n, "platform",
+           {"reference", "surge", "sway", "heave", "roll", "pitch", "yaw", "ramp"});
   PlatformMotion p;
   bool ok = n.IsMap();
   if (const YAML::Node* r = f.find("reference")) {

@@ -23,7 +23,8 @@ class BodyNodeLoad final : public model::NodeLoad {
   int node_;
   PointBody body_;
   std::shared_ptr<const Sea> sea_;
-  std::shared_ptr<const Sea> still_;  // sea_ without its waves, for static solves (LoadPoint::still)
+  std::shared_ptr<const Sea>
+      still_;  // sea_ without its waves, for static solves (LoadPoint::still)
 };
 
 }  // namespace flexmoor::hydro

@@ -36,7 +36,8 @@ class MorisonLineLoad final : public model::LineLoad {
 
  private:
   std::shared_ptr<const Sea> sea_;
-  std::shared_ptr<const Sea> still_;  // sea_ without its waves, for static solves (LoadPoint::still)
+  std::shared_ptr<const Sea>
+      still_;  // sea_ without its waves, for static solves (LoadPoint::still)
   std::shared_ptr<const HeldKinematics> held_;  // null: Sea::at at every call
   std::vector<std::optional<MorisonCoefficients>> sections_;
   model::LengthMeasure measure_;

@@ -29,7 +29,8 @@ class IncidentPressureLoad final : public model::SurfaceLoad {
 
  private:
   std::shared_ptr<const Sea> sea_;
-  std::shared_ptr<const Sea> still_;  // sea_ without its waves, for static solves (LoadPoint::still)
+  std::shared_ptr<const Sea>
+      still_;  // sea_ without its waves, for static solves (LoadPoint::still)
   WaterSide side_;
 };
 

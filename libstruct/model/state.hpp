@@ -57,8 +57,8 @@ inline bool sameDisplacement(const State& a, const State& b) {
 // load factor equal, exactly (the motion record aside).
 inline bool sameState(const State& a, const State& b) {
   return sameDisplacement(a, b) && a.time == b.time && a.load_factor == b.load_factor &&
-         a.still == b.still &&
-         sameBits(a.velocity, b.velocity) && sameBits(a.acceleration, b.acceleration);
+         a.still == b.still && sameBits(a.velocity, b.velocity) &&
+         sameBits(a.acceleration, b.acceleration);
 }
 
 }  // namespace flexmoor::model

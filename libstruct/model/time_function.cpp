@@ -33,8 +33,7 @@ double RampFunction::rate(double t) const {
   return (t > start_ && t < start_ + duration_) ? 1.0 / duration_ : 0.0;
 }
 
-RampedFunction::RampedFunction(std::shared_ptr<const TimeFunction> f, double start,
-                               double duration)
+RampedFunction::RampedFunction(std::shared_ptr<const TimeFunction> f, double start, double duration)
     : f_(std::move(f)), start_(start), duration_(duration) {
   if (!f_) throw std::invalid_argument("a ramp needs a function to ramp");
   if (!(duration > 0.0)) throw std::invalid_argument("a ramp needs a positive duration");

@@ -78,7 +78,7 @@ struct RelaxationOptions {
   double decrement = 1.0;                // gamma of Eq. C.14: mu(k+1) = gamma mu(k)
   double residual_tolerance = 1e-8;      // equilibrium check: |R| < tol * max(|P|, |F|)
   int max_steps = 500;
-  int max_iterations = 30;  // Newton iterations inside one pseudo-time step
+  int max_iterations = 30;    // Newton iterations inside one pseudo-time step
   bool frozen_waves = false;  // as StaticOptions
 };
 

@@ -68,9 +68,8 @@ class IncrementSolve {
       : a_(a),
         o_(o),
         log_(log),
-        linear_(o.pressure_load_stiffness || a.model().hasMotionLoads()
-                    ? MatrixKind::Unsymmetric
-                    : MatrixKind::Symmetric) {}
+        linear_(o.pressure_load_stiffness || a.model().hasMotionLoads() ? MatrixKind::Unsymmetric
+                                                                        : MatrixKind::Symmetric) {}
 
   // Iterates from `state` until the Convergence test holds; a self-corrective increment that
   // `carries` its residual (Eq. 4.20: one that is not the last) is accepted after one solve. False

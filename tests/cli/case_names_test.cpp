@@ -39,7 +39,8 @@ TEST(CaseNames, AMistypedNameSuggestsTheNearest) {
 }
 
 TEST(CaseNames, APathOrNameWithoutYamlResolves) {
-  const std::string file = std::string(FLEXMOOR_SOURCE_DIR) + "/cases/seed/ex1-suspended-cable-8xL2";
+  const std::string file =
+      std::string(FLEXMOOR_SOURCE_DIR) + "/cases/seed/ex1-suspended-cable-8xL2";
   const CliRun path = flexmoor("check " + file);
   EXPECT_EQ(path.exit_code, 0) << path.output;
   EXPECT_EQ(path.output.find(file + ".yaml: valid"), 0u) << path.output;

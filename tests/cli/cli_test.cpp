@@ -69,9 +69,10 @@ void expectAll(const CliRun& r, const std::vector<std::string>& parts) {
 TEST(Cli, HelpTeachesTheCommands) {
   const CliRun r = flexmoor("--help");
   EXPECT_EQ(r.exit_code, 0);
-  expectAll(r, {"run", "check", "cases", "named case", "units: US", "relax", "static", "modes",
-                "dynamic", "DIR/<case>.nc", "netCDF-4", "CF", "DIR/<case>-<n>.vtk",
-                "DIR/<case>.summary.json", "results/<case>/", "Exit codes", "Examples", "COMMAND --help"});
+  expectAll(
+      r, {"run", "check", "cases", "named case", "units: US", "relax", "static", "modes", "dynamic",
+          "DIR/<case>.nc", "netCDF-4", "CF", "DIR/<case>-<n>.vtk", "DIR/<case>.summary.json",
+          "results/<case>/", "Exit codes", "Examples", "COMMAND --help"});
 }
 
 // `run --help` is help, not a case named '--help'. Every command has its help.
@@ -79,8 +80,8 @@ TEST(Cli, EveryCommandHasItsOwnHelp) {
   const CliRun run = flexmoor("run --help");
   EXPECT_EQ(run.exit_code, 0) << run.output;
   expectAll(run, {"Usage: flexmoor run [OPTIONS] CASE", "-o,--output DIR", "--no-vtk",
-                  "Loads from step to step", "load_factor", "results/<case>/",
-                  "DIR/<case>.nc", "Exit codes", "Examples"});
+                  "Loads from step to step", "load_factor", "results/<case>/", "DIR/<case>.nc",
+                  "Exit codes", "Examples"});
   EXPECT_EQ(run.output.find("no case file"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("no case '"), std::string::npos) << run.output;
 

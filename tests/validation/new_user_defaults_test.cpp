@@ -7,12 +7,10 @@
 // three chains, 5e-12 for the one in a wave).
 #include <gtest/gtest.h>
 
-#include <sstream>
+#include <iostream>
 #include <string>
 
-#include "apps/case/case_reader.hpp"
-#include "apps/run/simulation.hpp"
-#include "tests/support/case_files.hpp"
+#include "tests/support/in_process_run.hpp"
 
 namespace flexmoor::test {
 namespace {
@@ -50,31 +48,22 @@ struct Run {
 };
 
 Run run(const std::string& name, const std::string& text) {
-  const app::Case c = app::readCase(writeCase(name + ".yaml", text));
-  std::ostringstream log, diag;
-  app::Simulation simulation(c, log, diag);
-  const app::SimulationResult r = simulation.run();
-  EXPECT_EQ(r.exit_code, app::kSuccess) << log.str() << diag.str();
-  Run out;
-  out.log = log.str();
-  for (const auto& [key, value] : r.summary) {
-    if (key == "t_max") out.max = value;
-    if (key == "t_min") out.min = value;
-  }
-  return out;
+  const InProcessRun r = runCaseInProcess(name, text);
+  EXPECT_EQ(r.exit_code, app::kSuccess) << r.log;
+  return {r.value("t_max"), r.value("t_min"), r.log};
 }
 
 void expectConvergedDefaults(const std::string& name, const std::string& lines, int steps) {
   const std::string dynamic = "dynamic: {dt: 0.05 s, steps: " + std::to_string(steps);
   const Run plain = run(name, kWater + lines + dynamic + "}\n" + kSummary);
-  const Run tight = run(name + "-tight", kWater + lines + dynamic +
-                                             ", residual_tolerance: 1e-12, tolerance: 1e-10}\n" +
-                                             kSummary);
+  const Run tight =
+      run(name + "-tight",
+          kWater + lines + dynamic + ", residual_tolerance: 1e-12, tolerance: 1e-10}\n" + kSummary);
   EXPECT_NE(plain.log.find(" 0 step cuts"), std::string::npos) << plain.log;
   EXPECT_NEAR(plain.max / tight.max, 1.0, 1e-7) << name;
   EXPECT_NEAR(plain.min / tight.min, 1.0, 1e-7) << name;
-  std::cout << "[ NewUserDefaults ] " << name << ": max " << plain.max / tight.max - 1.0
-            << ", min " << plain.min / tight.min - 1.0 << "\n";
+  std::cout << "[ NewUserDefaults ] " << name << ": max " << plain.max / tight.max - 1.0 << ", min "
+            << plain.min / tight.min - 1.0 << "\n";
 }
 
 TEST(NewUserDefaults, ThreeChainsUnderASurgeConvergeWithoutCuts) {

@@ -13,7 +13,6 @@
 //   (t = 20 s) it is tighter than at rest and when it moves fastest towards -x (t = 15 s) slacker;
 //   lines 1 and 3 (anchors at +x) the other way round.
 #include <gtest/gtest.h>
-
 #include <sys/resource.h>
 
 #include <cmath>

@@ -5,12 +5,11 @@
 // tension by 0.17% on such a line before statics were still: held to differ by more than 1e-4).
 #include <gtest/gtest.h>
 
-#include <sstream>
+#include <cmath>
+#include <iostream>
 #include <string>
 
-#include "apps/case/case_reader.hpp"
-#include "apps/run/simulation.hpp"
-#include "tests/support/case_files.hpp"
+#include "tests/support/in_process_run.hpp"
 
 namespace flexmoor::test {
 namespace {
@@ -25,23 +24,17 @@ mooring_lines:
 )";
 
 double fairleadTension(const std::string& name, const std::string& text) {
-  const app::Case c = app::readCase(writeCase(name + ".yaml", text));
-  std::ostringstream log, diag;
-  app::Simulation simulation(c, log, diag);
-  const app::SimulationResult r = simulation.run();
-  EXPECT_EQ(r.exit_code, app::kSuccess) << log.str() << diag.str();
-  for (const auto& [key, value] : r.summary)
-    if (key == "fairlead_tension_1") return value;
-  ADD_FAILURE() << "no fairlead_tension_1";
-  return 0.0;
+  const InProcessRun r = runCaseInProcess(name, text);
+  EXPECT_EQ(r.exit_code, app::kSuccess) << r.log;
+  return r.value("fairlead_tension_1");
 }
 
 TEST(StillWaterStatics, WavesStayOutOfTheEquilibriumUnlessFrozen) {
   const std::string waves = "waves:\n  components:\n    - {height: 4 m, period: 10 s}\n";
   const double calm = fairleadTension("calm-chain", kChain);
   const double still = fairleadTension("still-chain", std::string(kChain) + waves);
-  const double frozen = fairleadTension(
-      "frozen-chain", std::string(kChain) + waves + "statics: {waves: frozen}\n");
+  const double frozen =
+      fairleadTension("frozen-chain", std::string(kChain) + waves + "statics: {waves: frozen}\n");
   EXPECT_NEAR(still / calm, 1.0, 1e-9);
   EXPECT_GT(std::abs(frozen / calm - 1.0), 1e-4);
   std::cout << "[ StillWaterStatics ] calm " << calm << " N, frozen wave " << frozen << " N\n";

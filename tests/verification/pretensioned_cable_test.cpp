@@ -181,8 +181,8 @@ TEST(PretensionedCable, SelfCorrectiveErrorIsSecondOrderInTheIncrement) {
     errors.push_back(carried * assembler.elementSize() / exact.deflection);
     EXPECT_NEAR(-state.displacement(2, string->mid), exact.deflection, 1e-8 * exact.deflection);
   }
-  std::cout << "[ self-corrective ] carried error at 16, 32, 64 increments: " << errors[0]
-            << ", " << errors[1] << ", " << errors[2] << "\n";
+  std::cout << "[ self-corrective ] carried error at 16, 32, 64 increments: " << errors[0] << ", "
+            << errors[1] << ", " << errors[2] << "\n";
   EXPECT_NEAR(errors[0] / errors[1], 4.0, 0.4);
   EXPECT_NEAR(errors[1] / errors[2], 4.0, 0.4);
   EXPECT_LT(errors[2], 1e-4);

@@ -10,12 +10,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
+#include <iostream>
 #include <string>
 
-#include "apps/case/case_reader.hpp"
-#include "apps/run/simulation.hpp"
-#include "tests/support/case_files.hpp"
+#include "tests/support/in_process_run.hpp"
 #include "tests/support/mooring_catenary.hpp"
 
 namespace flexmoor::test {
@@ -39,8 +37,8 @@ std::string chainCase(const Line& line, int order, int elements, double bed) {
     << "line_types:\n  chain: {diameter: 0.25 m, mass_per_length: 390 kg/m, EA: 2.0e9 N,\n"
     << "          Cn: 1.6, Ct: 0.1, Ca: 1.0}\n"
     << "mooring_lines:\n  - {anchor: [" << line.span << ", 0, -200 m], fairlead: [0, 0, "
-    << line.fairlead_z << " m], length: " << line.length << " m, type: chain, elements: "
-    << elements << ", order: " << order << "}\n";
+    << line.fairlead_z << " m], length: " << line.length
+    << " m, type: chain, elements: " << elements << ", order: " << order << "}\n";
   return s.str();
 }
 
@@ -53,15 +51,11 @@ struct Outcome {
 Outcome solve(const Line& line, int order, int elements, double bed) {
   const std::string name = std::string("chain-") + line.name + "-" + std::to_string(order) + "-" +
                            std::to_string(elements) + "-" + std::to_string(int(std::log10(bed)));
-  const app::Case c = app::readCase(writeCase(name + ".yaml", chainCase(line, order, elements, bed)));
-  std::ostringstream log, diag;
-  app::Simulation simulation(c, log, diag);
-  const app::SimulationResult r = simulation.run();
+  const InProcessRun r = runCaseInProcess(name, chainCase(line, order, elements, bed));
   Outcome out;
   out.converged = r.exit_code == app::kSuccess;
-  out.log = log.str() + diag.str();
-  for (const auto& [key, value] : r.summary)
-    if (key == "fairlead_tension_1") out.tension = value;
+  out.log = r.log;
+  if (out.converged) out.tension = r.value("fairlead_tension_1");
   return out;
 }
 
