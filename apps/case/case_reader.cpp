@@ -132,8 +132,8 @@ std::string resolveCasePath(const std::string& name_or_path) {
   if (fs::is_regular_file(name_or_path)) return name_or_path;
   if (fs::is_regular_file(name_or_path + ".yaml")) return name_or_path + ".yaml";
   const bool yaml = fs::path(name_or_path).extension() == ".yaml";
-  const std::string name = yaml ? fs::path(name_or_path).stem().string()
-                                : fs::path(name_or_path).filename().string();
+  const std::string name =
+      yaml ? fs::path(name_or_path).stem().string() : fs::path(name_or_path).filename().string();
   if (name_or_path.find('/') != std::string::npos) {  // a path: the files next to it
     const fs::path directory = fs::path(name_or_path).parent_path();
     std::vector<std::string> stems, files;
@@ -154,11 +154,14 @@ std::string resolveCasePath(const std::string& name_or_path) {
   }
   if (matches.size() == 1) return matches.front().string();
   if (matches.empty()) {
+    std::string available;
+    for (const std::string& n : names) available += (available.empty() ? "" : ", ") + n;
     const std::string near = didYouMean(nearestNames(name, names));
     throw std::runtime_error("no case '" + name_or_path + "'" +
-                             (near.empty() ? " (no such file, nor a case of that name under "
-                                             "cases/: 'flexmoor cases' lists them)"
-                                           : near));
+                             (near.empty()
+                                  ? " (no such file, nor a case of that name; available: " +
+                                        (available.empty() ? "none" : available) + ")"
+                                  : near));
   }
   std::string where;
   for (const fs::path& m : matches) where += (where.empty() ? "" : ", ") + m.string();

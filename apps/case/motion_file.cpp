@@ -73,9 +73,9 @@ MotionSeries readMotionColumns(std::istream& in, const MotionColumn& time,
           index[k] = c.number - 1;
           label[k] = std::to_string(c.number);
           if (header && index[k] >= static_cast<int>(names.size()))
-            return fail(number_of_line, "no column " + std::to_string(c.number) + " (the header names " +
-                                            std::to_string(names.size()) + ": " + joined(names) +
-                                            ")");
+            return fail(number_of_line, "no column " + std::to_string(c.number) +
+                                            " (the header names " + std::to_string(names.size()) +
+                                            ": " + joined(names) + ")");
           continue;
         }
         const std::string name = c.name.empty() ? std::string("time") : c.name;

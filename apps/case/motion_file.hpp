@@ -31,8 +31,8 @@ struct MotionFileProblem {
 };
 
 struct MotionSeries {
-  std::vector<double> times, values;               // in the file's order, as written
-  std::optional<MotionFileProblem> problem;        // set: the series is not usable
+  std::vector<double> times, values;         // in the file's order, as written
+  std::optional<MotionFileProblem> problem;  // set: the series is not usable
 };
 
 // The columns `time` and `value` of `in`.

@@ -40,13 +40,15 @@ loads:
 steps:
   - static: {}
   - dynamic: {dt: 0.005 s, steps: 40}
-)" + output + figure;
+)" + output +
+         figure;
 }
 
 // Runs the wire writing only `fields` into a scratch directory; returns its netCDF.
 fs::path runWriting(const std::string& scratch_name, const std::string& fields) {
   const fs::path dir = scratch(scratch_name);
-  const CliRun r = runText(dir, "wire", wireCase("wire", "output: {fields: [" + fields + "]}\n", ""));
+  const CliRun r =
+      runText(dir, "wire", wireCase("wire", "output: {fields: [" + fields + "]}\n", ""));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return dir / "wire.nc";
 }
@@ -97,8 +99,8 @@ TEST(PlotFailures, DefaultFigureOfARunWithNeitherIsRefusedNamingTheSeriesItHas) 
 TEST(PlotFailures, SpeedWithoutVelocitiesOrAnIndexTheVariableLacksIsRefused) {
   const fs::path nc = runWriting("plot-fail-speed", "position, tension");
   const fs::path png = nc.parent_path() / "speed.png";
-  const CliRun speed = flexmoor("plot " + nc.string() + " -o " + png.string() +
-                                " --series speed@node=3");
+  const CliRun speed =
+      flexmoor("plot " + nc.string() + " -o " + png.string() + " --series speed@node=3");
   EXPECT_EQ(speed.exit_code, 2) << speed.output;
   EXPECT_NE(speed.errors.find("flexmoor plot: speed is |velocity| and needs velocity_x, _y and "
                               "_z; the file does not hold velocity_x, velocity_y, velocity_z "
@@ -106,8 +108,8 @@ TEST(PlotFailures, SpeedWithoutVelocitiesOrAnIndexTheVariableLacksIsRefused) {
             std::string::npos)
       << speed.errors;
   expectNoTraceback(speed);
-  const CliRun index = flexmoor("plot " + nc.string() + " -o " + png.string() +
-                                " --series position_x@element=2");
+  const CliRun index =
+      flexmoor("plot " + nc.string() + " -o " + png.string() + " --series position_x@element=2");
   EXPECT_EQ(index.exit_code, 2) << index.output;
   EXPECT_NE(index.errors.find("flexmoor plot: position_x has no element index (its dimensions: "
                               "time, node)"),
@@ -128,10 +130,10 @@ TEST(PlotFailures, OutputIntoADirectoryNotThereCreatesIt) {
   const CliRun blocked = flexmoor("plot " + nc.string() + " -o " +
                                   (nc.parent_path() / "blocked" / "wire.png").string());
   EXPECT_EQ(blocked.exit_code, 4) << blocked.output;
-  EXPECT_NE(blocked.errors.find("cannot create the directory " +
-                                (nc.parent_path() / "blocked").string() +
-                                " (a file of that name is in the way)"),
-            std::string::npos)
+  EXPECT_NE(
+      blocked.errors.find("cannot create the directory " + (nc.parent_path() / "blocked").string() +
+                          " (a file of that name is in the way)"),
+      std::string::npos)
       << blocked.errors;
   const CliRun directory = flexmoor("plot " + nc.string() + " -o " + nc.parent_path().string());
   EXPECT_EQ(directory.exit_code, 2) << directory.output;
@@ -139,9 +141,9 @@ TEST(PlotFailures, OutputIntoADirectoryNotThereCreatesIt) {
             std::string::npos)
       << directory.errors;
   // A refused figure creates no directory.
-  const CliRun refused = flexmoor("plot " + nc.string() + " -o " +
-                                  (nc.parent_path() / "refused" / "x.png").string() +
-                                  " --series buoy_x@node=1");
+  const CliRun refused =
+      flexmoor("plot " + nc.string() + " -o " + (nc.parent_path() / "refused" / "x.png").string() +
+               " --series buoy_x@node=1");
   EXPECT_EQ(refused.exit_code, 2) << refused.output;
   EXPECT_FALSE(fs::exists(nc.parent_path() / "refused"));
   expectNoTraceback(blocked);
@@ -151,21 +153,22 @@ TEST(PlotFailures, OutputIntoADirectoryNotThereCreatesIt) {
 TEST(PlotFailures, AnyOtherFailureIsOneLineWithExitCode4) {
   const fs::path nc = runWriting("plot-fail-internal", "displacement, tension");
   const fs::path dir = nc.parent_path();
-  const fs::path broken =
-      brokenMatplotlib(dir / "broken", "RuntimeError('a broken\\nmatplotlib')");
+  const fs::path broken = brokenMatplotlib(dir / "broken", "RuntimeError('a broken\\nmatplotlib')");
   const CliRun r = command("PYTHONPATH=" + broken.string() + " " + FLEXMOOR_BINARY + " plot " +
                            nc.string() + " -o " + (dir / "x.png").string());
   EXPECT_EQ(r.exit_code, 4) << r.output;
-  EXPECT_EQ(r.errors, "flexmoor plot: internal error, the figure was not drawn (RuntimeError: a "
-                      "broken matplotlib)\n");
+  EXPECT_EQ(r.errors,
+            "flexmoor plot: internal error, the figure was not drawn (RuntimeError: a "
+            "broken matplotlib)\n");
   const fs::path missing = brokenMatplotlib(
       dir / "missing", "ImportError('No module named pyparsing', name='pyparsing')");
   const CliRun m = command("PYTHONPATH=" + missing.string() + " " + FLEXMOOR_BINARY + " plot " +
                            nc.string() + " -o " + (dir / "x.png").string());
   EXPECT_EQ(m.exit_code, 4) << m.output;
-  EXPECT_EQ(m.errors, "flexmoor plot: cannot import pyparsing (No module named pyparsing): it "
-                      "needs Debian's python3-matplotlib and python3-xarray (scripts/setup.sh "
-                      "installs them)\n");
+  EXPECT_EQ(m.errors,
+            "flexmoor plot: cannot import pyparsing (No module named pyparsing): it "
+            "needs Debian's python3-matplotlib and python3-xarray (scripts/setup.sh "
+            "installs them)\n");
   EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 

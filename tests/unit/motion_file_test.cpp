@@ -41,10 +41,9 @@ TEST(MotionFile, CommaSeparatedWithAHeaderByNameOrNumber) {
 
 TEST(MotionFile, TabAndSpaceSeparatedWithoutAHeaderByNumber) {
   const std::string tabs = "0.0\t0.1\t-1e-3\n  0.05\t0.2\t 2E-3\r\n0.1\t\t0.3\t3e-3\n";
-  expectSeries(read(tabs, {}, MotionColumn::numbered(3)), {0.0, 0.05, 0.1},
-               {-1e-3, 2e-3, 3e-3});
-  expectSeries(read(tabs, MotionColumn::numbered(2), MotionColumn::numbered(1)),
-               {0.1, 0.2, 0.3}, {0.0, 0.05, 0.1});
+  expectSeries(read(tabs, {}, MotionColumn::numbered(3)), {0.0, 0.05, 0.1}, {-1e-3, 2e-3, 3e-3});
+  expectSeries(read(tabs, MotionColumn::numbered(2), MotionColumn::numbered(1)), {0.1, 0.2, 0.3},
+               {0.0, 0.05, 0.1});
   const std::string spaces = "# MoorDyn-style\n1 10 100\n2   20   200\n";
   expectSeries(read(spaces, {}, MotionColumn::numbered(2)), {1.0, 2.0}, {10.0, 20.0});
 }
