@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what flexmoor needs from Debian's packages (only what is missing; run as root or with
 # sudo available), then configures and builds a Release tree in build/. Idempotent.
+#   bash scripts/setup.sh            every target (the command, the test suite)
+#   bash scripts/setup.sh TARGET...  only those, with what they need (quickstart.sh: flexmoor)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -31,5 +33,7 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
+targets=()
+for target in "$@"; do targets+=(--target "$target"); done
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$jobs"
+cmake --build build -j"$jobs" ${targets[@]+"${targets[@]}"}

@@ -155,11 +155,14 @@ std::string resolveCasePath(const std::string& name_or_path) {
   }
   if (matches.size() == 1) return matches.front().string();
   if (matches.empty()) {
+    std::string available;
+    for (const std::string& n : names) available += (available.empty() ? "" : ", ") + n;
     const std::string near = didYouMean(nearestNames(name, names));
     throw std::runtime_error("no case '" + name_or_path + "'" +
-                             (near.empty() ? " (no such file, nor a case of that name under "
-                                             "cases/: 'flexmoor cases' lists them)"
-                                           : near));
+                             (near.empty()
+                                  ? " (no such file, nor a case of that name; available: " +
+                                        (available.empty() ? "none" : available) + ")"
+                                  : near));
   }
   std::string where;
   for (const fs::path& m : matches) where += (where.empty() ? "" : ", ") + m.string();

@@ -109,7 +109,8 @@ Case readCase(const CaseDocument& document, ForeignSeries* series = nullptr);
 // An existing file as it is, or with `.yaml` added; else the case `<name>.yaml` anywhere under
 // FLEXMOOR_CASES_DIR (`name` with or without `.yaml`). Throws std::runtime_error when there is
 // none, with the nearest names ("no case 'oc4-semi-surg'; did you mean 'oc4-semi-surge'?"; for a
-// path, the nearest .yaml files next to it), or when there are several.
+// path, the nearest .yaml files next to it; every available name when none is near), or when
+// there are several.
 std::string resolveCasePath(const std::string& name_or_path);
 
 // (name, title) of every .yaml under FLEXMOOR_CASES_DIR, sorted by name; the name is the file's

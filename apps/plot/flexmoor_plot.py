@@ -457,7 +457,9 @@ def main(argv):
             fail("--%s is an option of %s, not of --%s" % (
                 option.replace("_", "-").replace("start", "from"),
                 " and ".join("--" + o for o in owners.split()), kind))
-    output_directory(args.output)
+    if os.path.isdir(args.output):
+        fail("-o %s is a directory (expected the PNG file to write, like %s)"
+             % (args.output, os.path.join(args.output, "figure.png")))
     try:
         ds = xr.open_dataset(args.result)
     except (OSError, ValueError) as e:
@@ -473,6 +475,7 @@ def main(argv):
     title = args.title or ds.attrs.get("title", ds.attrs.get("case_name", ""))
     figure.suptitle(title, fontsize="medium")
     plain_ticks(figure)
+    output_directory(args.output)
     try:
         figure.savefig(args.output, dpi=130)
     except OSError as e:
@@ -482,10 +485,7 @@ def main(argv):
 
 
 def output_directory(png):
-    """-o names a file; its directory is created when it does not exist."""
-    if os.path.isdir(png):
-        fail("-o %s is a directory (expected the PNG file to write, like %s)"
-             % (png, os.path.join(png, "figure.png")))
+    """The directory of -o, created when it does not exist."""
     directory = os.path.dirname(png)
     if directory and not os.path.isdir(directory):
         try:

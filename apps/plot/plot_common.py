@@ -99,15 +99,15 @@ def tick_labels(values):
 
 def plain_ticks(figure):
     """Every linear axis of `figure` labelled by tick_labels: no offset or 1e6 factor at an
-    axis' end."""
+    axis' end (minus signs as matplotlib writes them)."""
     import matplotlib.ticker
 
     class Plain(matplotlib.ticker.Formatter):
         def __call__(self, x, pos=None):
-            return tick_labels([x])[0]
+            return self.fix_minus(tick_labels([x])[0])
 
         def format_ticks(self, values):
-            return tick_labels(values)
+            return [self.fix_minus(t) for t in tick_labels(values)]
 
     for ax in figure.axes:
         for axis, scale in ((ax.xaxis, ax.get_xscale()), (ax.yaxis, ax.get_yscale())):

@@ -28,9 +28,12 @@ TEST(CaseNames, AMistypedNameSuggestsTheNearest) {
                 "no case 'tube-rao-bse'; did you mean 'tube-rao-base'?");
   expectRefused(flexmoor("check oc3-hywind"),
                 "no case 'oc3-hywind'; did you mean 'oc3-hywind-statics' or 'oc3-hywind-surge'?");
-  expectRefused(flexmoor("check no-such-thing"),
-                "no case 'no-such-thing' (no such file, nor a case of that name under cases/: "
-                "'flexmoor cases' lists them)");
+  const CliRun far = flexmoor("check no-such-thing");
+  EXPECT_EQ(far.exit_code, 2) << far.output;
+  EXPECT_EQ(far.errors.find("flexmoor: no case 'no-such-thing' (no such file, nor a case of that "
+                            "name; available: chain-wire-chain-motion, "),
+            0u)
+      << far.errors;
   const std::string ocean = std::string(FLEXMOOR_SOURCE_DIR) + "/cases/ocean/";
   expectRefused(flexmoor("check " + ocean + "oc4-semi-surg.yaml"),
                 "no case file '" + ocean + "oc4-semi-surg.yaml'; did you mean '" + ocean +

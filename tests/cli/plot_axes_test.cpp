@@ -108,7 +108,8 @@ figure, what = p.draw_spectrum(ds, SimpleNamespace(spectrum="tension_end@element
                                                    start=100.0, segment=None))
 c.plain_ticks(figure)
 ax = figure.axes[0]
-print("top %.3f" % ax.get_xlim()[1], "|", ax.get_ylabel(), "| offsets:", repr("".join(offsets(figure))))
+print("top %.3f" % ax.get_xlim()[1], "|", ax.get_ylabel(), "| offsets:",
+      repr("".join(offsets(figure))))
 omega = np.linspace(0.0, 10.0, 1001)
 print("gauss %.4f" % c.energy_top(omega, np.exp(-0.5 * ((omega - 2.0) / 0.1) ** 2)))
 print("flat %.4f" % c.energy_top(omega, np.ones_like(omega)))

@@ -140,6 +140,12 @@ TEST(PlotFailures, OutputIntoADirectoryNotThereCreatesIt) {
   EXPECT_NE(directory.errors.find(" is a directory (expected the PNG file to write"),
             std::string::npos)
       << directory.errors;
+  // A refused figure creates no directory.
+  const CliRun refused =
+      flexmoor("plot " + nc.string() + " -o " + (nc.parent_path() / "refused" / "x.png").string() +
+               " --series buoy_x@node=1");
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_FALSE(fs::exists(nc.parent_path() / "refused"));
   expectNoTraceback(blocked);
   expectNoTraceback(directory);
 }
