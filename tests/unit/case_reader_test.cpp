@@ -379,14 +379,14 @@ TEST(CaseReader, ResolvesNamedCasesAndListsThem) {
   EXPECT_NE(found->second.find("Example 1"), std::string::npos) << found->second;
 }
 
-// A name near none of the cases points to the list; a near one is suggested (the nearest by
-// edit distance).
-TEST(CaseReader, UnknownCaseNameSuggestsTheNearestOrPointsToTheList) {
+// A name near none of the cases lists the available ones; a near one is suggested (the nearest
+// by edit distance).
+TEST(CaseReader, UnknownCaseNameListsTheAvailableOnesOrSuggestsTheNearest) {
   try {
     resolveCasePath("no-such-case");
     FAIL() << "an unknown case was resolved";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("'flexmoor cases' lists them"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("ex1-suspended-cable-8xL2"), std::string::npos)
         << e.what();
   }
   try {
