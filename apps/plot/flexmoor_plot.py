@@ -16,8 +16,12 @@ Of a study's DIR/study.nc:
 SPEC is VARIABLE@INDEX, for example
     position_x@node=5            x of node 5 (1-based, as in the file's `node` coordinate)
     speed@node=5                 |velocity| of node 5 (derived from velocity_x/_y/_z)
-    tension_end@element=1,end=1  axial force at the first end of element 1
+    tension_end@element=1,end=1  axial force at the first end of element 1 (end=1 or end=first:
+                                 the element's first node, end=2 or end=last: its last, as the
+                                 file's `end` coordinate says)
     wave_elevation               a record variable without an index
+A series is drawn from the records of the time axis (the dynamic steps') as a line, with the
+states that close the other steps (the `stage` records, at their stage_time) as dots.
 Units and names come from the files' CF attributes. Bad arguments: a message naming what is
 wrong, exit code 2.
 """
@@ -36,49 +40,66 @@ from study_figures import draw_extremes, draw_psd, draw_rao
 # Series of a run
 # --------------------------------------------------------------------------------------------
 
+END_WORDS = {"first": 1, "last": 2}
+
+
 def parse_spec(spec):
     name, _, index = spec.partition("@")
     selection = {}
     for part in filter(None, index.split(",")):
         key, _, value = part.partition("=")
+        key, value = key.strip(), value.strip()
+        if key == "end" and value in END_WORDS:
+            selection[key] = END_WORDS[value]
+            continue
         try:
-            selection[key.strip()] = int(value)
+            selection[key] = int(value)
         except ValueError:
-            fail("the index '%s' of %s is not a whole number (expected KEY=N, like node=5)"
-                 % (part, spec))
+            fail("the index '%s' of %s is not a whole number (expected KEY=N, like node=5%s)"
+                 % (part, spec, ", or end=first or end=last" if key == "end" else ""))
     return name.strip(), selection
 
 
-def select(ds, name, selection):
-    """The series of `name` at `selection`, its label and its units."""
+def record_variable(ds, name, stage):
+    """The variable `name` of the time records, or of the stage records (stage_NAME)."""
+    return ds["stage_" + name] if stage else ds[name]
+
+
+def has_records(ds, name, stage):
+    return ("stage_" + name if stage else name) in ds
+
+
+def select(ds, name, selection, stage=False):
+    """The series of `name` at `selection` (of the stage records when `stage`), its label and its
+    units; None for the stage records when the file has none of that variable."""
     where = {}
     for key, value in selection.items():
-        if key == "end":
-            if value not in (1, 2):
-                fail("end=%d in %s: expected end=1 (first) or end=2 (last)" % (value, name))
-            where[key] = value - 1  # 'end' has no coordinate: 1 = first, 2 = last
-        elif key in ds.indexes:
+        if key == "end" and value not in (1, 2):
+            fail("end=%d in %s: expected end=1 (first) or end=2 (last)" % (value, name))
+        if key in ds.indexes:
             if value not in ds.indexes[key]:
                 fail("%s=%d in %s: no such %s in the file (it has %d to %d)" %
                      (key, value, name, key, ds.indexes[key].min(), ds.indexes[key].max()))
             where[key] = value
         else:
             fail("unknown index '%s' in %s" % (key, name))
-    positional = {k: v for k, v in where.items() if k == "end"}
-    labelled = {k: v for k, v in where.items() if k != "end"}
+    source = "velocity_x" if name == "speed" else name
+    if not has_records(ds, source, False):
+        fail("no variable '%s' in the file" % name)
+    if stage and not has_records(ds, source, True):
+        return None
     if name == "speed":
-        parts = [ds["velocity" + a].sel(labelled) for a in ("_x", "_y", "_z")]
+        parts = [record_variable(ds, "velocity" + a, stage).sel(where) for a in ("_x", "_y", "_z")]
         values = np.sqrt(sum(p ** 2 for p in parts))
         units = ds["velocity_x"].attrs.get("units", "")
         long_name = "speed"
-    elif name in ds:
-        values = ds[name].sel(labelled).isel(positional)
+    else:
+        values = record_variable(ds, name, stage).sel(where)
         units = ds[name].attrs.get("units", "")
         long_name = ds[name].attrs.get("long_name", name)
-    else:
-        fail("no variable '%s' in the file" % name)
-    if set(values.dims) - {"time"}:
-        fail("%s needs an index for %s" % (name, ", ".join(sorted(set(values.dims) - {"time"}))))
+    extra = set(values.dims) - {"time", "stage"}
+    if extra:
+        fail("%s needs an index for %s" % (name, ", ".join(sorted(extra))))
     where_text = ", ".join("%s %d" % kv for kv in selection.items())
     label = long_name + (" (" + where_text + ")" if where_text else "")
     return values, label, units
@@ -88,47 +109,51 @@ def default_specs(ds):
     specs = []
     if "tension_end" in ds:
         specs.append(("max_tension", {}))
-    moved = np.sqrt(ds.displacement_x ** 2 + ds.displacement_y ** 2 + ds.displacement_z ** 2)
-    node = int(moved.max("time").argmax())
+    stage = ds.sizes["time"] == 0
+    moved = np.sqrt(sum(record_variable(ds, "displacement" + a, stage) ** 2
+                        for a in ("_x", "_y", "_z")))
+    node = int(moved.max("stage" if stage else "time").argmax())
     specs.append(("displacement_magnitude", {"node": int(ds.node[node])}))
     return specs
 
 
-def default_series(ds, name, selection):
+def default_series(ds, name, selection, stage=False):
     if name == "max_tension":
-        return (ds.tension_end.max(("element", "end")), "largest end tension over the elements",
-                ds.tension_end.attrs.get("units", ""))
+        return (record_variable(ds, "tension_end", stage).max(("element", "end")),
+                "largest end tension over the elements", ds.tension_end.attrs.get("units", ""))
     node = selection["node"]
-    parts = [ds["displacement" + a].sel(node=node) for a in ("_x", "_y", "_z")]
+    parts = [record_variable(ds, "displacement" + a, stage).sel(node=node)
+             for a in ("_x", "_y", "_z")]
     return (np.sqrt(sum(p ** 2 for p in parts)), "displacement magnitude (node %d)" % node,
             ds.displacement_x.attrs.get("units", ""))
 
 
 def draw_series(ds, args):
     specs = [parse_spec(s) for s in args.series]
-    panels, short_names = [], []
+    panels, stages, short_names = [], [], []
     for name, selection in specs or default_specs(ds):
         short_names.append(name.replace("_", " "))
         if specs:
             panels.append(select(ds, name, selection))
+            stages.append(select(ds, name, selection, stage=True))
         else:
             panels.append(default_series(ds, name, selection))
+            stages.append(default_series(ds, name, selection, stage=True))
 
     time_units = ds.time.attrs.get("units", "s")
     plt = pyplot()
     figure, axes = plt.subplots(len(panels), 1, sharex=True, squeeze=False,
                                 figsize=(8.0, 2.2 + 1.9 * len(panels)), constrained_layout=True)
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    dynamic = np.concatenate([[False], np.diff(ds.time.values) > 0])
-    for k, ((values, label, units), short) in enumerate(zip(panels, short_names)):
+    for k, ((values, label, units), stage, short) in enumerate(zip(panels, stages, short_names)):
         ax = axes[k][0]
-        t, y = ds.time.values, np.asarray(values)
         colour = colours[k % len(colours)]
-        line = dynamic | np.roll(dynamic, -1)
-        ax.plot(t[line], y[line], color=colour, linewidth=1.4, label=textwrap.fill(label, 60))
-        if (~dynamic).any():
-            ax.plot(t[~dynamic], y[~dynamic], "o", color=colour, markersize=3.5,
-                    label="end of a static step" if k == 0 else None)
+        ax.plot(ds.time.values, np.asarray(values), color=colour, linewidth=1.4,
+                label=textwrap.fill(label, 60))
+        if stage is not None and ds.sizes["stage"] > 0:
+            ax.plot(ds.stage_time.values, np.asarray(stage[0]), "o", color=colour,
+                    markersize=3.5, label="state closing a step that is not dynamic"
+                    if k == 0 else None)
         ax.set_ylabel("%s [%s]" % (short, units) if units else short)
         ax.ticklabel_format(axis="y", useOffset=False)
         ax.grid(True, alpha=0.3)
@@ -233,6 +258,9 @@ def last_dynamic_record(ds, values, start):
 def draw_spectrum(ds, args):
     name, selection = parse_spec(args.spectrum)
     values, label, units = select(ds, name, selection)
+    if ds.sizes["time"] == 0:
+        fail("the spectrum needs the records of a dynamic step; the file has none (only the "
+             "states closing its other steps, `stage`)")
     x, dt = last_dynamic_record(ds, values, args.start)
     time_units = ds.time.attrs.get("units", "s")
     duration = x.size * dt
@@ -325,19 +353,26 @@ def draw_shapes(ds, args):
     plane = args.plane
     if len(plane) != 2 or any(a not in "xyz" for a in plane) or plane[0] == plane[1]:
         fail("--plane %s: expected two of x, y, z, like xz" % plane)
-    t = ds.time.values
+    if "position_x" not in ds:
+        fail("--shapes: the file has no position_x (the case's output: fields: leaves out "
+             "position)")
+    # Every record, the stage records (steps that are not dynamic) first: at a time both have,
+    # the later record in the run is drawn.
+    records = [(float(t), True, i) for i, t in enumerate(ds.stage_time.values)]
+    records += [(float(t), False, i) for i, t in enumerate(ds.time.values)]
+    records.sort(key=lambda r: r[0])
+    t = np.array([r[0] for r in records])
+    if t.size == 0:
+        fail("--shapes: the file has no records")
     time_units = ds.time.attrs.get("units", "s")
     spacing = np.min(np.diff(t)[np.diff(t) > 0]) if np.any(np.diff(t) > 0) else 0.0
-    records = []
+    chosen = []
     for time in times:
         if time < t.min() - spacing or time > t.max() + spacing:
             fail("--shapes: the time %g %s is outside the records (%g to %g %s)" %
                  (time, time_units, t.min(), t.max(), time_units))
         nearest = np.abs(t - time)
-        records.append(int(np.flatnonzero(nearest == nearest.min())[-1]))  # the last of equals
-    if "position_x" not in ds:
-        fail("--shapes: the file has no position_x (the case's output: fields: leaves out "
-             "position)")
+        chosen.append(records[int(np.flatnonzero(nearest == nearest.min())[-1])])
     polylines = element_polylines(ds)
     units = ds["position_x"].attrs.get("units", "")
     plt = pyplot()
@@ -345,12 +380,13 @@ def draw_shapes(ds, args):
 
     figure, ax = plt.subplots(figsize=(9.0, 5.5), constrained_layout=True)
     colours = plt.cm.viridis(np.linspace(0.0, 0.9, len(times)))
-    for record, colour in zip(records, colours):
-        u = ds["position_" + plane[0]].isel(time=record).values
-        v = ds["position_" + plane[1]].isel(time=record).values
+    for (time, stage, record), colour in zip(chosen, colours):
+        dim = "stage" if stage else "time"
+        u = record_variable(ds, "position_" + plane[0], stage).isel({dim: record}).values
+        v = record_variable(ds, "position_" + plane[1], stage).isel({dim: record}).values
         segments = [np.column_stack([u[p], v[p]]) for p in polylines]
-        step = str(ds.step_name.values[record]) if "step_name" in ds else ""
-        label = "t = %g %s%s" % (t[record], time_units, " (%s)" % step if step else "")
+        names = ds.stage_step if stage else ds.step_name
+        label = "t = %g %s (%s)" % (time, time_units, str(names.values[record]))
         ax.add_collection(LineCollection(segments, colors=[colour], linewidths=1.4, label=label))
         ax.plot(u, v, "o", color=colour, markersize=2.0)
     ax.autoscale()
