@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "apps/case/diagnostics.hpp"
+#include "apps/study/member_case.hpp"
 #include "tests/study/study_cases.hpp"
 #include "tests/support/cli_run.hpp"
 #include "tests/support/hanging_masses.hpp"
@@ -235,6 +236,13 @@ TEST(StudyReader, NamedStudiesAreValid) {
   EXPECT_EQ(oc4.parameters[0].units, "m");
   EXPECT_EQ(oc4.parameters[2].units, "1");  // the seed, a count
   EXPECT_EQ(oc4.collect[0].units, "N");
+  // Its fairleads by line (line: line_k, end: fairlead): the last element of each line's 12.
+  const app::MemberCase member = app::buildMember(oc4, oc4.members[0]);
+  ASSERT_EQ(member.collect.size(), 3u);
+  for (size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(member.collect[k].element, static_cast<int>(12 * k + 11)) << k;
+    EXPECT_EQ(member.collect[k].end, 1) << k;
+  }
   // A US case's study: its periods and its statistics in the case's units (the RAO's ft/ft).
   const Study tube =
       app::readStudy(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/studies/tube-rao.yaml");
