@@ -144,21 +144,21 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
   stage_.prefix = "stage_";
   const std::string node_place = dim_line_ >= 0 ? " node_line node_arc_length" : "";
   const std::string element_place = dim_line_ >= 0 ? " element_line" : "";
-  time_.coordinate = time_.time = file_.defineVariable(
-      "time", NC_DOUBLE, {time_.dim}, "time since the start of the analysis", u.time);
+  time_.time = file_.defineVariable("time", NC_DOUBLE, {time_.dim},
+                                    "time since the start of the analysis", u.time);
   file_.putAttribute(time_.time, "standard_name", "time");
   file_.putAttribute(time_.time, "axis", "T");
   time_.step_number = file_.defineVariable("step_number", NC_INT, {time_.dim},
-                                           "analysis step of the case the record is of, 1-based");
+                                           "analysis step the record belongs to, 1-based");
   time_.step_name = file_.defineVariable("step_name", NC_CHAR, {time_.dim, dim_name_},
                                          "name of the analysis step");
   time_.load_factor =
       file_.defineVariable("load_factor", NC_DOUBLE, {time_.dim}, "load factor", "1");
   const std::string time_place = "step_number step_name load_factor";
-  stage_.coordinate = stage_.step_number = file_.defineVariable(
+  stage_.step_number = file_.defineVariable(
       "stage", NC_INT, {stage_.dim},
       "analysis step whose closing state (or last converged state) the record is, 1-based");
-  file_.putAttribute(stage_.coordinate, "start_index", 1);
+  file_.putAttribute(stage_.step_number, "start_index", 1);
   stage_.step_name = file_.defineVariable("stage_step", NC_CHAR, {stage_.dim, dim_name_},
                                           "name of the analysis step");
   stage_.time = file_.defineVariable("stage_time", NC_DOUBLE, {stage_.dim},
@@ -170,10 +170,10 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
     r->node_coordinates = place + " node_x node_y node_z" + node_place;
     r->element_coordinates = place + " element_x element_y element_z" + element_place;
     r->point_coordinates = place + " point_element";
-    for (const int text : {r->step_name}) file_.putAttribute(text, "_Encoding", "utf-8");
+    file_.putAttribute(r->step_name, "_Encoding", "utf-8");  // read as strings, not as bytes
     defineRecords(*r, u.time);
   }
-  file_.putAttribute(element_type_, "_Encoding", "utf-8");  // read as strings, not as bytes
+  file_.putAttribute(element_type_, "_Encoding", "utf-8");
   if (sea_) {
     wave_elevation_ = file_.defineVariable(
         "wave_elevation", NC_DOUBLE, {time_.dim},

@@ -115,8 +115,9 @@ class NetcdfWriter final : public ResultSink {
     std::string prefix;  // of the field variables' names: "" (time) or "stage_"
     int dim = -1;
     size_t count = 0;
-    int coordinate = -1;  // time(time) or stage(stage)
-    int time = -1, step_number = -1, step_name = -1, load_factor = -1;     // step_number: time only
+    // time: time(time), step_number, step_name, load_factor; stage: stage_time, stage(stage)
+    // (the step number), stage_step, stage_load_factor.
+    int time = -1, step_number = -1, step_name = -1, load_factor = -1;
     std::string node_coordinates, element_coordinates, point_coordinates;  // `coordinates`
     Vector3Variable displacement, position, velocity, reaction;
     int tension_end = -1, tension_point = -1;
