@@ -121,6 +121,17 @@ struct FigureSpec {
   SourceLocation where;
 };
 
+// A named line of the case (`lines:`, a multi-segment line and its segments), start to end.
+struct CaseLine {
+  // A mooring line's anchor end (its fairlead is the other end): `anchor: start | end`.
+  enum class Anchor { None, Start, End };
+  std::string name;
+  std::vector<int> nodes;     // 0-based model nodes, start to end
+  std::vector<int> elements;  // 0-based model elements, start to end
+  std::string segment_of;     // the multi-segment line it is a segment of, "" for none
+  Anchor anchor = Anchor::None;
+};
+
 // How the sea's components were made (build_hydro.cpp), for the results' metadata (the netCDF
 // global attributes sea_kind, sea_components, sea_discretisation, sea_seed, sea_repeat_period and
 // a spectrum's sea_spectrum_*, netcdf_writer.hpp).
@@ -150,7 +161,8 @@ struct Case {
   OutputFields output = OutputFields::all();          // `output: fields:`: what the records hold
   std::map<std::string, std::vector<int>> node_sets;  // named sets, 0-based nodes
   std::vector<int> node_ids;  // the file's id of each model node (explicit or generated)
-  std::map<std::string, std::vector<int>> lines;         // nodes of each named line, start to end
+  std::map<std::string, std::vector<int>> lines;  // nodes of each named line, start to end
+  std::vector<CaseLine> named_lines;  // every named line in the file's order (segments included)
   std::map<std::string, std::vector<int>> element_sets;  // named groups (surfaces, lines), 0-based
   // The water (`water:`, with its waves and current) whose loads act on the model; null for none.
   std::shared_ptr<const hydro::Sea> sea;

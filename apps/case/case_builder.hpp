@@ -3,6 +3,7 @@
 // read_materials.cpp, read_mesh.cpp, read_surfaces.cpp, node_refs.cpp, read_histories.cpp,
 // read_conditions.cpp, read_hydro.cpp, read_steps.cpp, read_summary.cpp). A name defined with errors is remembered as broken, so that what refers to
 // it is not reported again.
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -109,6 +110,8 @@ struct CaseBuilder {
   std::vector<PendingCable> line_cables;
   std::map<std::string, std::vector<int>> line_elements;  // the elements of each named line
   std::map<std::string, int> line_segments;  // the segment count of each multi-segment line
+  std::vector<std::string> line_order;       // the named lines in the order they are defined
+  std::map<std::string, CaseLine::Anchor> line_anchors;  // of the lines that say `anchor:`
   // Membrane law of each material (null: broken, or linear_elastic without nu).
   std::map<std::string, std::shared_ptr<const material::MembraneMaterial>> membrane_materials;
   std::vector<PendingSurface> surface_elements;
@@ -229,6 +232,30 @@ std::optional<std::vector<int>> nodeOrNodes(CaseBuilder& b, Fields& f);
 // A list of dofs from x, y, z, each once: [x, z] -> {0, 2}.
 std::optional<std::vector<int>> readFix(CaseBuilder& b, const YAML::Node& n,
                                         const std::string& path);
+
+// Places on a named line (line_refs.cpp), for summary: entries, figure: series and a study's
+// collect: entries. `line: NAME`: the named line (segments included), or nullptr after reporting
+// an unknown name (a broken one silently).
+const CaseLine* lineRef(CaseBuilder& b, const YAML::Node& n, const std::string& path);
+// `end:` of a line: start | end | first | last | 1 | 2, and anchor | fairlead of a mooring line
+// (`anchor:`): true for the line's last node, false for its first.
+std::optional<bool> lineEnd(CaseBuilder& b, const CaseLine& line, const YAML::Node& n,
+                            const std::string& path);
+// `end:` of an element: first | 1 (its first node) -> 0, last | 2 (its last node) -> 1.
+std::optional<int> elementEnd(CaseBuilder& b, const YAML::Node& n, const std::string& path);
+// The node of an entry of a node quantity: `node: REF`, or `line: NAME` with `end: E` or
+// `node: K` (the line's K-th node, 1-based).
+std::optional<int> nodeOfEntry(CaseBuilder& b, Fields& f);
+// The element end of an entry of an end quantity: `element: ID, end: E` (the element read by
+// `element_id`), or `line: NAME` with `end: E` (the element at that end of the line, at its
+// end there) or with `element: K, end: E` (the line's K-th element, 1-based).
+struct ElementEndRef {
+  int element;  // 0-based model element
+  int end;      // 0: its first node, 1: its last
+};
+std::optional<ElementEndRef> elementEndOfEntry(
+    CaseBuilder& b, Fields& f,
+    const std::function<std::optional<int>(const YAML::Node&, const std::string&)>& element_id);
 
 // Checks that a name can be used to refer to something (a word without '.', not a number).
 bool checkName(CaseBuilder& b, const YAML::Node& at, const std::string& path,

@@ -1,5 +1,6 @@
 // Node references and node_sets: of a case file.
 //   one node:     7 (an id) | cable.start | cable.end | cable.middle | {at: [x, y, z]}
+//                 | moor.anchor | moor.fairlead (a line with `anchor:`, a mooring line)
 //   several:      all | a node set | a line's or a surface's name (all its nodes) | one node
 //                 | {where: {x: X, y: Y, z: Z}} (every node on those planes) | a list of these
 #include <algorithm>
@@ -98,6 +99,17 @@ std::optional<int> lineNode(CaseBuilder& b, const YAML::Node& n, const std::stri
     return std::nullopt;
   }
   const std::vector<int>& nodes = found->second;
+  if (where == "anchor" || where == "fairlead") {
+    const auto anchor = b.line_anchors.find(line);
+    if (anchor == b.line_anchors.end()) {
+      b.diag.error(n, path + ": line '" + line + "' has no " + where + " (got '" + n.Scalar() +
+                          "', expected start, end or middle: anchor and fairlead name the ends "
+                          "of a mooring line, a line with anchor:)");
+      return std::nullopt;
+    }
+    const bool at_start = (anchor->second == CaseLine::Anchor::Start) == (where == "anchor");
+    return at_start ? nodes.front() : nodes.back();
+  }
   if (where == "start") return nodes.front();
   if (where == "end") return nodes.back();
   if (where == "middle") {
@@ -107,7 +119,8 @@ std::optional<int> lineNode(CaseBuilder& b, const YAML::Node& n, const std::stri
     return std::nullopt;
   }
   b.diag.error(n, path + ": unknown place on line '" + line + "' (got '" + where +
-                      "', expected start, end or middle)");
+                      "', expected start, end or middle" +
+                      (b.line_anchors.count(line) ? ", anchor or fairlead)" : ")"));
   return std::nullopt;
 }
 

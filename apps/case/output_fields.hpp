@@ -1,18 +1,19 @@
 #pragma once
-// What the records of a run's netCDF file hold besides time, step_number, step_name and
-// load_factor (which every record has), as the case's `output: fields:` lists it. A long run
-// written every step is mostly its records: a mooring line of 151 nodes writes 20 KB a record
-// with every field, 3.6 KB of it reactions, so a user who wants the fairlead tension names
-// `tension` alone. The default is every field. The modes of a modes step are always written.
+// What the records of a run's netCDF file hold besides their time, step and load factor (which
+// every record has), as the case's `output: fields:` lists it. A long run written every step is
+// mostly its records: a mooring line of 151 nodes writes 20 KB a record with every field, 3.6 KB
+// of it reactions, so a user who wants the fairlead tension names `tension` alone. The default is
+// every field. The modes of a modes step are always written.
 //
-//   field               netCDF variables
+//   field               netCDF variables: the time records', and the stage records' (prefixed
+//                       stage_, with the dimension stage for time; netcdf_writer.hpp)
 //   displacement        displacement_x/_y/_z (time, node)
 //   position            position_x/_y/_z (time, node)
 //   velocity            velocity_x/_y/_z (time, node)
 //   reaction            reaction_x/_y/_z (time, node)
 //   tension             tension_end (time, element, end), tension_point (time, point)
 //   membrane_resultant  membrane_resultant_max/_min (time, element)
-//   wave_elevation      wave_elevation (time), with a sea
+//   wave_elevation      wave_elevation (time), with a sea (time records only)
 #include <array>
 #include <bitset>
 #include <optional>

@@ -4,7 +4,8 @@
 //     series:
 //       - {quantity: position_x, node: cable.end}
 //       - {quantity: speed, node: cable.end}
-//       - {quantity: tension_end, element: 1, end: 1}
+//       - {quantity: tension_end, element: 1, end: first}   # end: first | last | 1 | 2
+//       - {quantity: tension_end, line: moor, end: fairlead}  # a line's end (line_refs.cpp)
 #include "apps/case/case_builder.hpp"
 
 namespace flexmoor::app {
@@ -22,7 +23,7 @@ const std::vector<std::string>& nodeQuantities() {
 
 std::optional<std::string> readSeries(CaseBuilder& b, const YAML::Node& item,
                                       const std::string& path) {
-  Fields f(b.diag, item, path, {"quantity", "node", "element", "end"});
+  Fields f(b.diag, item, path, {"quantity", "node", "element", "end", "line"});
   const YAML::Node* q = f.require("quantity");
   const auto quantity = q ? b.in.text(*q, f.path("quantity")) : std::nullopt;
   if (!quantity) return std::nullopt;
@@ -42,29 +43,46 @@ std::optional<std::string> readSeries(CaseBuilder& b, const YAML::Node& item,
                          "does not list " + std::string(OutputFields::name(field)) + ")");
     return std::nullopt;
   }
+  const bool on_line = f.find("line") != nullptr;
+  for (const char* key : {"node", "element", "end"}) {
+    const bool used = is_node ? std::string(key) == "node" || (std::string(key) == "end" && on_line)
+                              : std::string(key) != "node";
+    if (f.find(key) && !used) {
+      b.diag.error(*f.find(key), f.path(key) + ": not used by " + *quantity +
+                                     (is_node && std::string(key) == "end"
+                                          ? " without line: (expected line: NAME with end:)"
+                                          : ""));
+      return std::nullopt;
+    }
+  }
   if (is_node) {
-    const YAML::Node* n = f.require("node");
-    const auto node = n ? nodeRef(b, *n, f.path("node")) : std::nullopt;
+    const auto node = nodeOfEntry(b, f);
     if (!node) return std::nullopt;
     return *quantity + "@node=" + std::to_string(*node + 1);
   }
-  const YAML::Node* e = f.require("element");
   const int count = static_cast<int>(b.element_types.size());
-  const int end = b.in.integerOr(f, "end", 1, 1);
-  if (f.find("end") && end > 2)
-    b.diag.error(*f.find("end"),
-                 f.path("end") + ": out of range (got " + std::to_string(end) +
-                     ", expected 1 for the element's first node or 2 for its last)");
-  if (!e || count == 0) return std::nullopt;  // no elements: reported by readCase
-  const int element = b.in.integer(*e, f.path("element"), 1, count).value_or(0);
-  if (element == 0) return std::nullopt;
-  const std::string& type = b.element_types[element - 1];
-  if (type != "cable" && type != "spring") {
-    b.diag.error(*e, f.path("element") + ": element " + std::to_string(element) + " is a " + type +
-                         " (expected a cable or spring)");
+  const auto element_id = [&](const YAML::Node& e, const std::string& at) -> std::optional<int> {
+    if (count == 0) return std::nullopt;  // no elements: reported by readCase
+    const auto id = b.in.integer(e, at, 1, count);
+    if (!id) return std::nullopt;
+    const std::string& type = b.element_types[*id - 1];
+    if (type == "cable" || type == "spring") return *id - 1;
+    if (!type.empty())
+      b.diag.error(e, at + ": element " + std::to_string(*id) + " is a " + type +
+                          " (expected a cable or spring)");
     return std::nullopt;
+  };
+  std::optional<ElementEndRef> at;
+  if (!on_line && !f.find("end")) {  // an element's first end unless end: says
+    const YAML::Node* e = f.require("element");
+    const auto element = e ? element_id(*e, f.path("element")) : std::nullopt;
+    if (element) at = ElementEndRef{*element, 0};
+  } else {
+    at = elementEndOfEntry(b, f, element_id);
   }
-  return "tension_end@element=" + std::to_string(element) + ",end=" + std::to_string(end);
+  if (!at) return std::nullopt;
+  return "tension_end@element=" + std::to_string(at->element + 1) +
+         ",end=" + std::to_string(at->end + 1);
 }
 
 }  // namespace

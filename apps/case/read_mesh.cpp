@@ -54,6 +54,7 @@ bool joinSegments(CaseBuilder& b, const YAML::Node& n, const std::string& path,
     if (!checkName(b, n, path, name)) return false;
     b.line_segments[name] = 1;
     b.c.lines[name] = nodes;
+    b.line_order.push_back(name);
     return true;
   }
   std::vector<int>& line = b.c.lines.at(name);
@@ -70,10 +71,31 @@ bool joinSegments(CaseBuilder& b, const YAML::Node& n, const std::string& path,
   return true;
 }
 
+// `anchor: start | end` of a line, or of a segment for the whole line it is a segment of (its
+// segments must agree): the line is a mooring line with its anchor at that end and its fairlead
+// at the other, which `anchor` and `fairlead` then name (LINE.anchor, line: NAME, end: fairlead).
+void readAnchor(CaseBuilder& b, const YAML::Node& n, const std::string& path,
+                const std::string& line) {
+  using Anchor = CaseLine::Anchor;
+  const auto anchor =
+      b.in.choice<Anchor>(n, path, {{"start", Anchor::Start}, {"end", Anchor::End}});
+  if (!anchor) return;
+  if (line.empty()) {
+    b.diag.error(n, path + ": a line without a name (got anchor: on a line nothing can refer " +
+                        "to, expected name: with it)");
+    return;
+  }
+  const auto [it, added] = b.line_anchors.emplace(line, *anchor);
+  if (!added && it->second != *anchor)
+    b.diag.error(n, path + ": not the anchor another segment of " + line + " gives (got " +
+                        n.Scalar() + ", expected " +
+                        (it->second == Anchor::Start ? "start" : "end") + ")");
+}
+
 void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   Fields f(b.diag, item, path,
            {"name", "from", "to", "start_node", "end_node", "elements", "order", "section",
-            "initial_shape", "segment_of"});
+            "initial_shape", "segment_of", "anchor"});
   std::string name;
   if (const YAML::Node* n = f.find("name")) {
     name = b.in.text(*n, f.path("name")).value_or("");
@@ -131,7 +153,30 @@ void readLine(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
     }
   if (const YAML::Node* shape = f.find("initial_shape"))
     readInitialShape(b, *shape, f.path("initial_shape"), nodes, section, segment_of);
-  if (!name.empty()) b.c.lines[name] = std::move(nodes);
+  if (const YAML::Node* anchor = f.find("anchor"))
+    readAnchor(b, *anchor, f.path("anchor"), segment_of.empty() ? name : segment_of);
+  if (!name.empty()) {
+    b.c.lines[name] = std::move(nodes);
+    b.line_order.push_back(name);
+  }
+}
+
+// The named lines in the order they were defined, with their elements (CaseLine).
+void collectNamedLines(CaseBuilder& b) {
+  std::map<std::string, std::string> segment_of;
+  for (const PendingCable& p : b.line_cables)
+    if (!p.name.empty() && !p.segment_of.empty()) segment_of[p.name] = p.segment_of;
+  for (const std::string& name : b.line_order) {
+    CaseLine line;
+    line.name = name;
+    line.nodes = b.c.lines.at(name);
+    if (const auto e = b.line_elements.find(name); e != b.line_elements.end())
+      line.elements = e->second;
+    if (const auto s = segment_of.find(name); s != segment_of.end()) line.segment_of = s->second;
+    if (const auto a = b.line_anchors.find(name); a != b.line_anchors.end())
+      line.anchor = a->second;
+    b.c.named_lines.push_back(std::move(line));
+  }
 }
 
 // The nodes of an explicit element: a list of `count_min`..`count_max` distinct node references.
@@ -385,6 +430,7 @@ void readElements(CaseBuilder& b, const YAML::Node& n) {
     b.element_types.push_back("cable");
     b.element_origin.push_back({p.line, p.where, p.section});
   }
+  collectNamedLines(b);
   for (PendingSurface& surface : b.surface_elements) {
     std::vector<int>& set = b.c.element_sets[surface.name];
     for (PendingElement& e : surface.elements) {

@@ -147,30 +147,43 @@ std::optional<int> stepRef(CaseBuilder& b, const YAML::Node& n, const std::strin
 }
 
 // `element: ID` (1-based over the file's elements, then the lines' and the surfaces' elements) or
-// `element: SURFACE.K` (the K-th element of a surface), of one of the `types`.
+// `element: SURFACE.K` (the K-th element of a surface) or `element: LINE.K` (of a line), of one
+// of the `types`.
 std::optional<int> elementRef(CaseBuilder& b, const YAML::Node& n, const std::string& path,
                               const std::vector<std::string>& types, const std::string& wanted) {
   std::optional<int> index;
   const std::string s = n.IsScalar() ? n.Scalar() : "";
   const size_t dot = s.find('.');
   if (dot != std::string::npos) {
-    const auto set = b.c.element_sets.find(s.substr(0, dot));
-    if (set == b.c.element_sets.end()) {
-      if (!b.broken_node_names.count(s.substr(0, dot)))
-        b.diag.error(n, path + ": unknown surface (got '" + s + "', expected SURFACE.K with " +
-                            "SURFACE " + nameList(b.c.element_sets) + ")");
+    const std::string group = s.substr(0, dot), tail = s.substr(dot + 1);
+    const std::vector<int>* elements = nullptr;
+    if (const auto set = b.c.element_sets.find(group); set != b.c.element_sets.end())
+      elements = &set->second;
+    for (const CaseLine& line : b.c.named_lines)
+      if (line.name == group) elements = &line.elements;
+    int local = 0;
+    const auto [end, error] = std::from_chars(tail.data(), tail.data() + tail.size(), local);
+    const bool number = error == std::errc() && end == tail.data() + tail.size();
+    if (!elements) {
+      if (!b.broken_node_names.count(group))
+        b.diag.error(n, path + ": unknown surface or line (got '" + s + "', expected SURFACE.K " +
+                            "or LINE.K with SURFACE " + nameList(b.c.element_sets) +
+                            " and LINE one of the lines)");
       return std::nullopt;
     }
-    const int count = static_cast<int>(set->second.size());
-    int local = 0;
-    const std::string tail = s.substr(dot + 1);
-    const auto [end, error] = std::from_chars(tail.data(), tail.data() + tail.size(), local);
-    if (error != std::errc() || end != tail.data() + tail.size() || local < 1 || local > count) {
-      b.diag.error(n, path + ": no such element of '" + set->first + "' (got '" + tail +
+    const int count = static_cast<int>(elements->size());
+    if (!number && b.c.lines.count(group)) {  // LINE.end and the like: a node's name
+      b.diag.error(n, path + ": not an element (got '" + s + "', a place on line '" + group +
+                          "'; expected line: " + group + " with end:, or LINE.K for its K-th " +
+                          "element, 1 to " + std::to_string(count) + ")");
+      return std::nullopt;
+    }
+    if (!number || local < 1 || local > count) {
+      b.diag.error(n, path + ": no such element of '" + group + "' (got '" + tail +
                           "', expected 1 to " + std::to_string(count) + ")");
       return std::nullopt;
     }
-    index = set->second[local - 1];
+    index = (*elements)[local - 1];
   } else {
     const int count = static_cast<int>(b.element_types.size());
     if (count == 0) return std::nullopt;  // no elements: reported by readCase
@@ -207,18 +220,25 @@ bool checkReaction(CaseBuilder& b, const YAML::Node& n, const std::string& path,
   return true;
 }
 
-// Every key a quantity does not use is an error, so that a misplaced key is not ignored.
+// Every key a quantity does not use is an error, so that a misplaced key is not ignored. A node
+// quantity takes end: with line: (the line's end).
 bool rejectUnused(CaseBuilder& b, Fields& f, const std::string& quantity, Target target) {
   bool ok = true;
+  const bool on_line = f.find("line") != nullptr;
   for (const std::string key : {"node", "element", "end", "mode", "line"}) {
-    const bool used = key == "node"   ? target == Target::Node
-                      : key == "line" ? target == Target::Line
-                      : key == "element"
-                          ? target == Target::ElementEnd || target == Target::Membrane
-                      : key == "end" ? target == Target::ElementEnd
-                                     : target == Target::Mode;
+    const bool used =
+        key == "node" ? target == Target::Node
+        : key == "line"
+            ? target == Target::Line || target == Target::Node || target == Target::ElementEnd
+        : key == "element" ? target == Target::ElementEnd || target == Target::Membrane
+        : key == "end"     ? target == Target::ElementEnd || (target == Target::Node && on_line)
+                           : target == Target::Mode;
     if (f.find(key) && !used) {
-      b.diag.error(*f.find(key), f.path(key) + ": not used by " + quantity);
+      const bool end_without_line = key == "end" && target == Target::Node;
+      b.diag.error(*f.find(key), f.path(key) + ": not used by " + quantity +
+                                     (end_without_line ? " without line: (expected line: NAME "
+                                                         "with end:, or node: alone)"
+                                                       : ""));
       ok = false;
     }
   }
@@ -420,11 +440,12 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const YAML::Node& value,
   else
     readReportUnit(b, f, info.measure, s);
   if (info.target == Target::Node) {
-    const YAML::Node* n = f.require("node");
-    const auto node = n ? nodeRef(b, *n, f.path("node")) : std::nullopt;
+    const auto node = nodeOfEntry(b, f);
     if (!node) return std::nullopt;
     s.node = *node;
-    if (!checkReaction(b, *n, f.path("node"), s)) return std::nullopt;
+    const char* key = f.find("node") ? "node" : "end";
+    if (!checkReaction(b, f.find(key) ? *f.find(key) : f.node(), f.path(key), s))
+      return std::nullopt;
   }
   if (info.target == Target::Membrane) {
     const YAML::Node* el = f.require("element");
@@ -455,16 +476,12 @@ std::optional<SummarySpec> readQuantity(CaseBuilder& b, const YAML::Node& value,
     s.mode = *mode;
   }
   if (info.target == Target::ElementEnd) {
-    const YAML::Node* el = f.require("element");
-    const YAML::Node* end = f.require("end");
-    const auto element =
-        el ? elementRef(b, *el, f.path("element"), {"cable", "spring"}, "a cable or spring")
-           : std::nullopt;
-    const auto which =
-        end ? b.in.choice<int>(*end, f.path("end"), {{"first", 0}, {"last", 1}}) : std::nullopt;
-    if (!element || !which) return std::nullopt;
-    s.element = *element;
-    s.end = *which;
+    const auto at = elementEndOfEntry(b, f, [&b](const YAML::Node& n, const std::string& path) {
+      return elementRef(b, n, path, {"cable", "spring"}, "a cable or spring");
+    });
+    if (!at) return std::nullopt;
+    s.element = at->element;
+    s.end = at->end;
   }
   if (info.target == Target::Line) {
     const YAML::Node* l = f.require("line");

@@ -16,7 +16,8 @@
 //                                  # largest anchor tension; a figure of the buoy's x, z, speed
 //                                  # and the anchor tension
 //
-// Node names: the anchor is cable.start, the buoy cable.end.
+// Node names: the anchor is cable.start (cable.anchor: the line is a mooring line, anchor:
+// start), the buoy cable.end (cable.fairlead).
 #include <cmath>
 
 #include "apps/case/scenario.hpp"
@@ -159,6 +160,7 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
   line["elements"] = elements;
   line["order"] = order;
   line["section"] = "line";
+  line["anchor"] = "start";  // cable.anchor; its fairlead, cable.end, holds the buoy
   doc["lines"].push_back(line);
   YAML::Node body;
   body["node"] = "cable.end";
@@ -192,8 +194,8 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
       YAML::Node n;
       n["quantity"] = q;
       if (std::string(q) == "end_tension") {
-        n["element"] = 1;
-        n["end"] = "first";
+        n["line"] = "cable";
+        n["end"] = "anchor";
       } else {
         n["node"] = "cable.end";
       }
@@ -209,7 +211,11 @@ YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root) {
     std::vector<YAML::Node> series;
     for (const char* q : {"position_x", "position_z", "speed"})
       series.push_back(nodeSeries(q, YAML::Node("cable.end")));
-    series.push_back(firstElementTensionSeries());
+    YAML::Node anchor_tension;
+    anchor_tension["quantity"] = "tension_end";
+    anchor_tension["line"] = "cable";
+    anchor_tension["end"] = "anchor";
+    series.push_back(anchor_tension);
     if (const YAML::Node figure = defaultFigure(top, series); figure.IsMap())
       doc["figure"] = figure;
   }

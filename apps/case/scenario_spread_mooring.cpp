@@ -35,14 +35,18 @@
 // before the lines' cables) and a point body of its volume (bodies: type point, with its
 // drag_area and Ca): a net upward force (rho V - m) g, with the body's Morison loads in motion.
 //
-// Line k (1-based) is `line_k` (line_1, line_2, ...): its anchor line_k.start, its fairlead
-// line_k.end. The default
-// summary: per line, fairlead_tension_k and anchor_tension_k (the force on the end point from the
-// end element's nodal force balance, end_tension), fairlead_horizontal_k and fairlead_vertical_k
-// (the fairlead support's reaction: the upward pull that holds the line), anchor_horizontal_k and
-// anchor_vertical_k (the line's pull on the anchor, upward +: an uplift; a laid line's anchor,
-// held at the bed's level, carries a little of the laid part's weight, a small negative value)
-// and length_on_seabed_k.
+// Line k (1-based) is `line_k` (line_1, line_2, ...), a mooring line (`anchor: start`): its
+// anchor line_k.start (line_k.anchor), its fairlead line_k.end (line_k.fairlead). The default
+// summary, per line, in the state that closes the static step (the scenario's equilibrium, or
+// with steps: of the case's own the last step before the first dynamic one):
+// fairlead_tension_static_k and anchor_tension_static_k (the force on the end point from the end
+// element's nodal force balance, end_tension; the first is the line's pretension),
+// fairlead_horizontal_static_k and fairlead_vertical_static_k (the fairlead support's reaction:
+// the upward pull that holds the line), anchor_horizontal_static_k and anchor_vertical_static_k
+// (the line's pull on the anchor, upward +: an uplift; a laid line's anchor, held at the bed's
+// level, carries a little of the laid part's weight, a small negative value) and
+// length_on_seabed_static_k; with a dynamic step, over the last one: fairlead_tension_max_k,
+// fairlead_tension_min_k, anchor_tension_max_k and anchor_vertical_max_k (the largest uplift).
 //
 // Each fairlead is a support of line_k.end with the displacement that takes the reference end to
 // the fairlead (fairleadSupport below). With `platform:`, the fairleads are points of the rigid
@@ -116,6 +120,7 @@ Eigen::Vector3d addLine(YAML::Node& doc, const std::string& name, const MooringL
     line["order"] = segment.order;
     line["section"] = segment.type;
     line["initial_shape"] = "catenary";
+    line["anchor"] = "start";  // of the whole line, for a segment
     if (m.has_segments) line["segment_of"] = name;
     doc["lines"].push_back(line);
   }
@@ -141,13 +146,71 @@ Eigen::Vector3d addLine(YAML::Node& doc, const std::string& name, const MooringL
   return m.anchor + s * along;
 }
 
-YAML::Node summaryItem(const char* quantity, const char* key, const std::string& value,
-                       const char* end = nullptr) {
+// One summary entry of line `line`: a quantity at one of its ends, at the close of step
+// `step` (1-based) or, with `stat`, over it.
+YAML::Node lineSummary(const char* quantity, const std::string& line, const char* end, int step,
+                       const char* stat = nullptr) {
   YAML::Node n;
   n["quantity"] = quantity;
-  n[key] = value;
+  n["line"] = line;
   if (end) n["end"] = end;
+  n["step"] = step;
+  if (stat) n["stat"] = stat;
   return n;
+}
+
+// The steps the default summary reads (1-based; 0 for none): the static one, the last step
+// before the first dynamic step (or the last step when none is dynamic), and the last dynamic.
+struct SummarySteps {
+  int statics = 0, dynamic = 0;
+};
+
+SummarySteps summarySteps(const YAML::Node* steps, bool dynamic) {
+  if (!steps) return {1, dynamic ? 2 : 0};  // the scenario's equilibrium, then its dynamic:
+  SummarySteps s;
+  int index = 0;
+  bool before_dynamic = true;
+  for (const YAML::Node& item : *steps) {
+    ++index;
+    const bool is_dynamic = item.IsMap() && item["dynamic"];
+    if (is_dynamic) {
+      before_dynamic = false;
+      s.dynamic = index;
+    } else if (before_dynamic) {
+      s.statics = index;
+    }
+  }
+  return s;
+}
+
+// The default summary of line `name` (line k): the state closing the static step (_static_k)
+// and, with a dynamic step, the fairlead tension's extremes, the anchor tension's largest value
+// and the anchor's largest uplift over it (_max_k, _min_k).
+void addLineSummary(YAML::Node summary, const std::string& name, const std::string& k,
+                    SummarySteps steps) {
+  if (steps.statics > 0) {
+    const int st = steps.statics;
+    summary["fairlead_tension_static_" + k] = lineSummary("end_tension", name, "fairlead", st);
+    summary["fairlead_horizontal_static_" + k] =
+        lineSummary("reaction_horizontal", name, "fairlead", st);
+    summary["fairlead_vertical_static_" + k] = lineSummary("reaction_z", name, "fairlead", st);
+    summary["anchor_tension_static_" + k] = lineSummary("end_tension", name, "anchor", st);
+    summary["anchor_horizontal_static_" + k] =
+        lineSummary("reaction_horizontal", name, "anchor", st);
+    YAML::Node uplift = lineSummary("reaction_z", name, "anchor", st);
+    uplift["scale"] = -1;  // the line's pull on the anchor, upward +
+    summary["anchor_vertical_static_" + k] = uplift;
+    summary["length_on_seabed_static_" + k] = lineSummary("length_on_seabed", name, nullptr, st);
+  }
+  if (steps.dynamic > 0) {
+    const int dy = steps.dynamic;
+    summary["fairlead_tension_max_" + k] = lineSummary("end_tension", name, "fairlead", dy, "max");
+    summary["fairlead_tension_min_" + k] = lineSummary("end_tension", name, "fairlead", dy, "min");
+    summary["anchor_tension_max_" + k] = lineSummary("end_tension", name, "anchor", dy, "max");
+    YAML::Node uplift = lineSummary("reaction_z", name, "anchor", dy, "max");
+    uplift["scale"] = -1;
+    summary["anchor_vertical_max_" + k] = uplift;
+  }
 }
 
 }  // namespace
@@ -208,10 +271,7 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
     if (const YAML::Node damping = t.node["damping"]) section["damping"] = damping;
     doc["sections"][name] = section;
   }
-  // Explicit elements (the attachments' point masses) come first in the model's numbering.
-  int elements_before = 0;
-  for (const MooringLine& m : lines)
-    for (const MooringAttachment& a : m.attachments) elements_before += a.mass > 0.0 ? 1 : 0;
+  const SummarySteps summary_steps = summarySteps(top.find("steps"), top.find("dynamic"));
   for (size_t i = 0; i < lines.size(); ++i) {
     const MooringLine& m = lines[i];
     const std::string name = "line_" + std::to_string(i + 1);
@@ -221,24 +281,8 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
     anchor["fix"] = flowSequence({"x", "y", "z"});
     doc["supports"].push_back(anchor);
     addFairleadSupports(doc, name, end, m.fairlead, platform);
-    int elements = 0;
-    for (const MooringSegment& segment : m.segments) elements += segment.elements;
-    if (!top.find("summary")) {
-      const std::string k = std::to_string(i + 1);
-      const std::string first = std::to_string(elements_before + 1);
-      const std::string last = std::to_string(elements_before + elements);
-      YAML::Node s = doc["summary"];
-      s["fairlead_tension_" + k] = summaryItem("end_tension", "element", last, "last");
-      s["fairlead_horizontal_" + k] = summaryItem("reaction_horizontal", "node", name + ".end");
-      s["fairlead_vertical_" + k] = summaryItem("reaction_z", "node", name + ".end");
-      s["anchor_tension_" + k] = summaryItem("end_tension", "element", first, "first");
-      s["anchor_horizontal_" + k] = summaryItem("reaction_horizontal", "node", name + ".start");
-      YAML::Node uplift = summaryItem("reaction_z", "node", name + ".start");
-      uplift["scale"] = -1;  // the line's pull on the anchor, upward +
-      s["anchor_vertical_" + k] = uplift;
-      s["length_on_seabed_" + k] = summaryItem("length_on_seabed", "line", name);
-    }
-    elements_before += elements;
+    if (!top.find("summary"))
+      addLineSummary(doc["summary"], name, std::to_string(i + 1), summary_steps);
   }
   doc["loads"]["gravity"]["g"] = scenarioNumber(g);
   if (const YAML::Node* steps = top.find("steps")) {

@@ -19,7 +19,8 @@
 //                                       # largest z, the largest mooring tension; a figure of
 //                                       # nodes 1, 7, 4, 10 and the first cable's tension
 //
-// Node names: the cables are lines mooring_right and mooring_left (their .end the anchors), the
+// Node names: the cables are mooring lines mooring_right and mooring_left (anchor: end: their .end,
+// .anchor, on the bed; their .start, .fairlead, at the tube), the
 // membrane the surface tube; nodes 1, 4, 7, 10 of the dissertation (top, right, bottom, left on
 // the ring y = 0) by position.
 #include <cmath>
@@ -149,6 +150,7 @@ YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
     line["elements"] = elements;
     line["order"] = order;
     line["section"] = "mooring";
+    line["anchor"] = "end";  // on the bed: mooring_right.anchor, its fairlead at the tube
     doc["lines"].push_back(line);
   }
   YAML::Node surface;

@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace flexmoor::app {
 namespace {
@@ -214,6 +216,31 @@ Unit parseUnit(const std::string& expression) { return UnitParser(expression).pa
 double systemScale(Dimension d, UnitSystem system) {
   if (system == UnitSystem::SI) return 1.0;
   return std::pow(kSlug, d.mass) * std::pow(kFoot, d.length);  // US: slug, ft, s
+}
+
+std::string unitSystemName(UnitSystem system) {
+  const UnitNames u = unitNames(system);
+  return std::string(system == UnitSystem::US ? "US" : "SI") + " (" + u.length + ", " + u.mass +
+         ", " + u.time + ", " + u.force + ")";
+}
+
+std::string systemUnits(Dimension d, UnitSystem system) {
+  const bool us = system == UnitSystem::US;
+  const std::string length = us ? "ft" : "m";
+  if (d.mass == 1 && d.length == 1 && d.time == -2) return us ? "lbf" : "N";
+  if (!us && d.mass == 1 && d.length == -1 && d.time == -2) return "Pa";
+  std::vector<std::pair<std::string, int>> factors;
+  if (us && d.mass == 1 && d.time <= -2) {  // a force times what is left: lbf ft-2, lbf s ft-1
+    factors = {{"lbf", 1}, {"ft", d.length - 1}, {"s", d.time + 2}};
+  } else {
+    factors = {{us ? "slug" : "kg", d.mass}, {length, d.length}, {"s", d.time}};
+  }
+  std::string units;
+  for (const auto& [name, exponent] : factors) {
+    if (exponent == 0) continue;
+    units += (units.empty() ? "" : " ") + name + (exponent == 1 ? "" : std::to_string(exponent));
+  }
+  return units.empty() ? "1" : units;
 }
 
 double standardGravity(UnitSystem system) {

@@ -152,12 +152,30 @@ const YAML::Node* Fields::require(const std::string& key) {
   return n;
 }
 
+namespace {
+thread_local QuantityMarks* recording = nullptr;
+}  // namespace
+
+QuantityMarks::QuantityMarks() : previous_(recording) { recording = this; }
+QuantityMarks::~QuantityMarks() { recording = previous_; }
+
+std::optional<Dimension> QuantityMarks::at(const YAML::Node& n) const {
+  const auto found = marks_.find({n.Mark().line, n.Mark().column});
+  if (found == marks_.end()) return std::nullopt;
+  return found->second;
+}
+
+void QuantityMarks::note(const YAML::Node& n, const Dimension& d) {
+  if (recording && n.Mark().line >= 0) recording->marks_[{n.Mark().line, n.Mark().column}] = d;
+}
+
 std::optional<double> Input::quantity(const YAML::Node& n, const std::string& path,
                                       const QuantityKind& kind, Limit limit) {
   if (!n.IsScalar()) {
     diag.error(n, path + ": expected " + kind.name + " (got " + describeNode(n) + ")");
     return std::nullopt;
   }
+  QuantityMarks::note(n, kind.dimension);
   double value = 0.0;
   try {
     value = parseValue(n.Scalar(), kind, units);

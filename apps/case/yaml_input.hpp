@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <climits>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -78,6 +79,27 @@ class Fields {
 };
 
 enum class Limit { Any, Positive, NonNegative };
+
+// The dimension of every quantity Input::quantity reads on this thread while a QuantityMarks is
+// alive, by the place of its value in the file (YAML::Mark's line and column): a study's
+// parameters take the units of the values they vary from it (apps/study/study_parameters.hpp).
+// Marks of one file only: a value set from another file keeps its own place.
+class QuantityMarks {
+ public:
+  QuantityMarks();  // records until destroyed (the one before it resumes then)
+  ~QuantityMarks();
+  QuantityMarks(const QuantityMarks&) = delete;
+  QuantityMarks& operator=(const QuantityMarks&) = delete;
+
+  // The dimension the value at `n`'s place was read as; nullopt for a value not read as one.
+  std::optional<Dimension> at(const YAML::Node& n) const;
+  // Where Input::quantity tells it what it read (nothing when none is recording).
+  static void note(const YAML::Node& n, const Dimension& d);
+
+ private:
+  std::map<std::pair<int, int>, Dimension> marks_;
+  QuantityMarks* previous_ = nullptr;
+};
 
 // Scalar readers in one unit system.
 class Input {

@@ -27,10 +27,12 @@ Steps run in order, each from the state the previous one left:
   dynamic  Newmark or HHT-alpha time steps with Newton iterations
 
 'flexmoor run' writes into DIR (-o DIR; default results/<case>/):
-  DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions: time, node and element
-                       coordinates, displacements, velocities, reactions, tensions, membrane
-                       resultants and mode shapes, with units; one record per step or per
-                       output time, flushed as it goes. `output: {fields: [position, tension]}`
+  DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions: time, node, element, end and
+                       line coordinates, displacements, velocities, reactions, tensions, membrane
+                       resultants and mode shapes, with units; the dynamic steps' records along
+                       time (strictly increasing), the states closing the other steps along
+                       stage (by step number), flushed as it goes; each node's and element's
+                       line and arc length. `output: {fields: [position, tension]}`
                        in the case keeps only those fields in the records (a long run
                        written every step is mostly its records)
   DIR/<case>-<n>.vtk   the deformed shape (and mode shapes) after step n, for ParaView
@@ -87,8 +89,9 @@ dynamic step after another continues its motion; static and relax steps end at r
 )"
     R"(
 Outputs, in DIR (default results/<case>/):
-  DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions, one record per step or per
-                       output time, flushed as it goes; written by a second thread while the
+  DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions: a dynamic step's records along
+                       time, a static, relax or modes step's closing state along stage (by step
+                       number), flushed as it goes; written by a second thread while the
                        run goes on when it streams 1,000 records or more (not with
                        --no-writer-thread)
   DIR/<case>-<n>.vtk   the deformed shape (and mode shapes) after step n (not with --no-vtk)
@@ -146,8 +149,8 @@ every member's run. An example (cases/studies/ has more):
   collect:
     - name: fairlead_tension_1       # a variable name in study.nc
       quantity: end_tension          # as a summary: entry: quantity, node, element, end, ...
-      element: 12
-      end: last
+      line: line_1                   # line_1's fairlead end (or element: 12, end: last)
+      end: fairlead
       window: {from: 100 s}          # the part of the last dynamic step that counts
       statistics: [max, min, mean, std, amplitude, mpm]   # amplitude = (max - min) / 2
       mpm: {duration: 3 h, fit: weibull}   # most probable maximum: weibull (peaks) | gumbel
@@ -159,7 +162,8 @@ are checked; problems are reported as STUDY:LINE (exit 2), naming the member.
 
 DIR (-o) holds:
   DIR/study.nc                 one netCDF (CF-1.8) with a member dimension: the varied values
-                               as coordinates (SI), status and error of each member, NAME_max,
+                               as coordinates (in the base case's units, each with its units),
+                               status and error of each member, NAME_max,
                                NAME_min, NAME_mean, NAME_std (time-weighted over the window, as
                                a case's summary: statistics), NAME_amplitude, NAME_mpm (the
                                most probable maximum over mpm's duration, from a fit to the
@@ -207,7 +211,8 @@ figure at a time:
 
 Of a run (DIR/<case>.nc of 'flexmoor run'):
   --series SPEC ...  time series, one panel each (the default: the largest end tension and the
-                     displacement of the node that moves most; static steps' records as points)
+                     displacement of the node that moves most; the states closing the steps
+                     that are not dynamic, the stage records, as points)
   --spectrum SPEC    the Welch spectrum (Hann window, half overlap, per rad/s) of one series
                      over the last step (records of time steps cut short interpolated onto the
                      step's dt), against the target spectrum of the run's sea (its
@@ -220,14 +225,16 @@ Of a run (DIR/<case>.nc of 'flexmoor run'):
 SPEC is VARIABLE@INDEX with 1-based indices as in the file's coordinates:
   position_x@node=5            x of node 5 in the current configuration
   speed@node=5                 |velocity| of node 5
-  tension_end@element=1,end=1  axial force at the first end of element 1 (end=2: the last)
+  tension_end@element=1,end=1  axial force at the first end of element 1 (end=first the same;
+                               end=2 or end=last: the last), as the file's end coordinate
   wave_elevation               the sea's elevation at x = y = 0 (a variable of the record alone)
 
 Of a study (DIR/study.nc of 'flexmoor study'; PARAMETER is a varied path with '.' as '_', as
 listed in its study_parameters; failed members are left out):
   --rao NAME --against PARAMETER [--wave-height H|PARAMETER] [--group PARAMETER]
                      NAME_amplitude against the parameter; with --wave-height, divided by half
-                     the wave height (a response-amplitude operator)
+                     the wave height (a response-amplitude operator; a number H is in the
+                     study's length unit, its unit_system's)
   --extremes NAME --against PARAMETER [--group PARAMETER]
                      NAME_max (filled markers) and NAME_mpm (open markers, when collected)
                      against the parameter, one colour per value of --group, and their means
@@ -241,7 +248,8 @@ exit code 4.
 
 Examples:
   flexmoor plot results/driven-taut-cable/driven-taut-cable.nc -o cable.png
-  flexmoor plot RESULT.nc -o tension.png --series tension_end@element=1,end=1 --series speed@node=5
+  flexmoor plot RESULT.nc -o tension.png --series tension_end@element=1,end=first \
+      --series speed@node=5
   flexmoor plot RESULT.nc -o sea.png --spectrum wave_elevation --from 100
   flexmoor plot RESULT.nc -o fairlead.png --spectrum tension_end@element=1,end=1 --segment 200
   flexmoor plot RESULT.nc -o shapes.png --shapes 100,200,300

@@ -53,6 +53,7 @@ BackgroundSink::Held& BackgroundSink::next(const ResultFrame& frame) {
   held.frame.state = &held.state;
   held.frame.step_index = frame.step_index;
   held.frame.step_name = frame.step_name;
+  held.frame.stage = frame.stage;
   held.frame.frequencies = frame.frequencies;
   held.frame.mode_shapes = frame.mode_shapes;
   held.frame.pending = frame.pending;

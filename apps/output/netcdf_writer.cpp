@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "apps/case/diagnostics.hpp"
+#include "apps/case/units.hpp"
 #include "apps/output/finite_value.hpp"
 #include "apps/output/membrane_resultants.hpp"
 #include "libhydro/waves/sea.hpp"
@@ -14,10 +16,6 @@ namespace flexmoor::app {
 namespace {
 
 constexpr const char* kAxis[3] = {"_x", "_y", "_z"};
-// CF auxiliary coordinates (CF 5): the record's step and load factor, and where a value sits.
-constexpr const char* kNodeCoordinates = "step_number step_name load_factor node_x node_y node_z";
-constexpr const char* kElementCoordinates =
-    "step_number step_name load_factor element_x element_y element_z";
 
 std::vector<int> oneBased(size_t count) {
   std::vector<int> index(count);
@@ -34,12 +32,6 @@ std::string utcNow() {
   return text;
 }
 
-std::string unitSystemName(UnitSystem system) {
-  const UnitNames u = unitNames(system);
-  return std::string(system == UnitSystem::US ? "US" : "SI") + " (" + u.length + ", " + u.mass +
-         ", " + u.time + ", " + u.force + ")";
-}
-
 }  // namespace
 
 NetcdfWriter::~NetcdfWriter() = default;
@@ -52,6 +44,7 @@ NetcdfWriter::NetcdfWriter(const std::string& path, const model::Model& model, c
       force_unit_(unitNames(c.units).force),
       resultant_unit_(unitNames(c.units).force + "/" + unitNames(c.units).length),
       mass_unit_(unitNames(c.units).mass),
+      length_unit_(unitNames(c.units).length),
       fields_(c.output),
       sea_(c.output.has(OutputField::WaveElevation) ? c.sea : nullptr) {
   if (node_count_ == 0 || element_count_ == 0)
@@ -59,6 +52,7 @@ NetcdfWriter::NetcdfWriter(const std::string& path, const model::Model& model, c
   defineHeader(model, c);
   file_.endDefine();
   writeMesh(model);
+  writeLines(c, model);
   file_.sync();
 }
 
@@ -91,6 +85,9 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
   dim_node_ = file_.defineDimension("node", node_count_);
   dim_element_ = file_.defineDimension("element", element_count_);
   dim_end_ = file_.defineDimension("end", 2);
+  std::vector<const CaseLine*> lines;  // the whole lines, not the segments
+  for (const CaseLine& l : c.named_lines)
+    if (l.segment_of.empty()) lines.push_back(&l);
   dim_element_node_ = file_.defineDimension("element_node", element_nodes);
   // name_strlen: as long as the longest name written (without the case's steps, as long as any
   // step name may be).
@@ -101,13 +98,18 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
     for (const auto& e : model.elements())
       name_length_ = std::max(name_length_, e->typeName().size());
   }
+  for (const CaseLine* l : lines) name_length_ = std::max(name_length_, l->name.size());
   text_count_[1] = name_length_;
   dim_name_ = file_.defineDimension("name_strlen", name_length_);
-  dim_step_ = file_.defineDimension("time", NC_UNLIMITED);
+  if (!lines.empty()) dim_line_ = file_.defineDimension("line", lines.size());
+  time_.dim = file_.defineDimension("time", NC_UNLIMITED);
+  stage_.dim = file_.defineDimension("stage", NC_UNLIMITED);
 
   const UnitNames u = unitNames(c.units);
   node_index_ = defineIndex("node", dim_node_, "node number");
   element_index_ = defineIndex("element", dim_element_, "element number");
+  end_index_ = file_.defineVariable("end", NC_INT, {dim_end_},
+                                    "end of the element: 1 = its first node, 2 = its last node");
   for (int k = 0; k < 3; ++k) {
     const std::string axis(1, "xyz"[k]);
     node_coordinate_[k] = file_.defineVariable(
@@ -130,61 +132,118 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
       "nodes of each element in element order (first, interior..., last), 1-based");
   file_.putAttribute(element_nodes_, "start_index", 1);
 
-  // The record dimension and its coordinate (CF 4.4): static steps keep the time of the state
-  // they start from, so records of a static sequence share one time and are told apart by the
-  // auxiliary coordinates step_number, step_name and load_factor.
-  time_ = file_.defineVariable("time", NC_DOUBLE, {dim_step_},
-                               "time since the start of the analysis", u.time);
-  file_.putAttribute(time_, "standard_name", "time");
-  file_.putAttribute(time_, "axis", "T");
-  step_number_ = file_.defineVariable("step_number", NC_INT, {dim_step_},
-                                      "analysis step of the case this record closes, 1-based");
-  step_name_ = file_.defineVariable("step_name", NC_CHAR, {dim_step_, dim_name_},
-                                    "name of the analysis step");
-  for (const int text : {element_type_, step_name_})  // read as strings, not as bytes
-    file_.putAttribute(text, "_Encoding", "utf-8");
-  load_factor_ = file_.defineVariable("load_factor", NC_DOUBLE, {dim_step_}, "load factor", "1");
+  if (dim_line_ >= 0) defineLines();
 
-  // The fields of the case's `output: fields:`; a variable not defined keeps the id -1.
-  const std::vector<int> step_node = {dim_step_, dim_node_};
+  // The record dimensions, their coordinates and the fields under each (see the header).
+  const bool meridian = std::any_of(model.elements().begin(), model.elements().end(),
+                                    [](const auto& e) { return e->axisymmetric(); });
+  // An axisymmetric meridian's forces are per radian of circumference (its hoops' tensions are
+  // whole forces).
+  reaction_unit_ = meridian ? u.force + "/rad" : u.force;
+  time_.prefix = "";
+  stage_.prefix = "stage_";
+  const std::string node_place = dim_line_ >= 0 ? " node_line node_arc_length" : "";
+  const std::string element_place = dim_line_ >= 0 ? " element_line" : "";
+  time_.time = file_.defineVariable("time", NC_DOUBLE, {time_.dim},
+                                    "time since the start of the analysis", u.time);
+  file_.putAttribute(time_.time, "standard_name", "time");
+  file_.putAttribute(time_.time, "axis", "T");
+  time_.step_number = file_.defineVariable("step_number", NC_INT, {time_.dim},
+                                           "analysis step the record belongs to, 1-based");
+  time_.step_name = file_.defineVariable("step_name", NC_CHAR, {time_.dim, dim_name_},
+                                         "name of the analysis step");
+  time_.load_factor =
+      file_.defineVariable("load_factor", NC_DOUBLE, {time_.dim}, "load factor", "1");
+  const std::string time_place = "step_number step_name load_factor";
+  stage_.step_number = file_.defineVariable(
+      "stage", NC_INT, {stage_.dim},
+      "analysis step whose closing state (or last converged state) the record is, 1-based");
+  file_.putAttribute(stage_.step_number, "start_index", 1);
+  stage_.step_name = file_.defineVariable("stage_step", NC_CHAR, {stage_.dim, dim_name_},
+                                          "name of the analysis step");
+  stage_.time = file_.defineVariable("stage_time", NC_DOUBLE, {stage_.dim},
+                                     "time since the start of the analysis", u.time);
+  stage_.load_factor =
+      file_.defineVariable("stage_load_factor", NC_DOUBLE, {stage_.dim}, "load factor", "1");
+  const std::string stage_place = "stage_step stage_time stage_load_factor";
+  for (auto [r, place] : {std::pair{&time_, time_place}, std::pair{&stage_, stage_place}}) {
+    r->node_coordinates = place + " node_x node_y node_z" + node_place;
+    r->element_coordinates = place + " element_x element_y element_z" + element_place;
+    r->point_coordinates = place + " point_element";
+    file_.putAttribute(r->step_name, "_Encoding", "utf-8");  // read as strings, not as bytes
+    defineRecords(*r, u.time);
+  }
+  file_.putAttribute(element_type_, "_Encoding", "utf-8");
+  if (sea_) {
+    wave_elevation_ = file_.defineVariable(
+        "wave_elevation", NC_DOUBLE, {time_.dim},
+        "incident wave elevation at x = y = 0 (with the sea's ramp)", u.length);
+    file_.putAttribute(wave_elevation_, "standard_name", "sea_surface_elevation");
+    file_.putAttribute(wave_elevation_, "coordinates", time_place);
+    file_.writtenInFull(wave_elevation_);
+  }
+}
+
+// The field variables of one record dimension (the case's `output: fields:`); a variable not
+// defined keeps the id -1.
+void NetcdfWriter::defineRecords(Records& r, const std::string& units_time) {
+  for (const int id : {r.time, r.step_number, r.step_name, r.load_factor}) file_.writtenInFull(id);
+  const std::vector<int> record_node = {r.dim, dim_node_};
   const auto nodal = [&](OutputField field, const std::string& name, const std::string& long_name,
                          const std::string& units) {
-    Vector3Variable v = fields_.has(field) ? defineVector3(name, step_node, long_name, units)
-                                           : Vector3Variable{name, {-1, -1, -1}};
+    Vector3Variable v = fields_.has(field)
+                            ? defineVector3(r.prefix + name, record_node, long_name, units)
+                            : Vector3Variable{r.prefix + name, {-1, -1, -1}};
     for (const int id : v.id)
       if (id >= 0) {
-        file_.putAttribute(id, "coordinates", kNodeCoordinates);
+        file_.putAttribute(id, "coordinates", r.node_coordinates);
         file_.writtenInFull(id);
       }
     return v;
   };
-  displacement_ = nodal(OutputField::Displacement, "displacement", "displacement", u.length);
-  position_ =
-      nodal(OutputField::Position, "position", "coordinate in the current configuration", u.length);
-  velocity_ = nodal(OutputField::Velocity, "velocity", "velocity", u.length + "/" + u.time);
-  // An axisymmetric meridian's forces are per radian of circumference (its hoops' tensions are
-  // whole forces).
-  const bool meridian = std::any_of(model.elements().begin(), model.elements().end(),
-                                    [](const auto& e) { return e->axisymmetric(); });
-  reaction_ = nodal(OutputField::Reaction, "reaction", "support reaction (zero at free dofs)",
-                    meridian ? u.force + "/rad" : u.force);
+  r.displacement = nodal(OutputField::Displacement, "displacement", "displacement", length_unit_);
+  r.position = nodal(OutputField::Position, "position", "coordinate in the current configuration",
+                     length_unit_);
+  r.velocity =
+      nodal(OutputField::Velocity, "velocity", "velocity", length_unit_ + "/" + units_time);
+  r.reaction = nodal(OutputField::Reaction, "reaction", "support reaction (zero at free dofs)",
+                     reaction_unit_);
   if (fields_.has(OutputField::Tension)) {
-    tension_end_ =
-        file_.defineVariable("tension_end", NC_DOUBLE, {dim_step_, dim_element_, dim_end_},
-                             "axial force at the first and the last node of the element", u.force);
-    file_.putAttribute(tension_end_, "coordinates", kElementCoordinates);
-    file_.putAttribute(tension_end_, "_FillValue", NC_FILL_DOUBLE);  // membranes and point masses
+    r.tension_end = file_.defineVariable(
+        r.prefix + "tension_end", NC_DOUBLE, {r.dim, dim_element_, dim_end_},
+        "axial force at the first and the last node of the element", force_unit_);
+    file_.putAttribute(r.tension_end, "coordinates", r.element_coordinates);
+    file_.putAttribute(r.tension_end, "_FillValue", NC_FILL_DOUBLE);  // membranes, point masses
     // (tension_end keeps its fill: NC_NOFILL would drop the _FillValue that marks membranes.)
   }
-  if (sea_) {
-    wave_elevation_ = file_.defineVariable(
-        "wave_elevation", NC_DOUBLE, {dim_step_},
-        "incident wave elevation at x = y = 0 (with the sea's ramp)", u.length);
-    file_.putAttribute(wave_elevation_, "standard_name", "sea_surface_elevation");
-    file_.putAttribute(wave_elevation_, "coordinates", "step_number step_name load_factor");
-    file_.writtenInFull(wave_elevation_);
+}
+
+// The case's lines (whole lines, in the file's order): names, anchors, and each node's and
+// element's line with the nodes' unstretched arc length (see the header comment).
+void NetcdfWriter::defineLines() {
+  line_index_ = defineIndex("line", dim_line_, "line number");
+  line_name_ =
+      file_.defineVariable("line_name", NC_CHAR, {dim_line_, dim_name_}, "name of the line");
+  file_.putAttribute(line_name_, "_Encoding", "utf-8");
+  line_anchor_ = file_.defineVariable(
+      "line_anchor", NC_INT, {dim_line_},
+      "end of the line that is its anchor (a mooring line; its fairlead is the other end)");
+  file_.putAttribute(line_anchor_, "flag_values", std::vector<int>{0, 1, 2});
+  file_.putAttribute(line_anchor_, "flag_meanings", "no_anchor anchor_at_start anchor_at_end");
+  file_.putAttribute(line_anchor_, "coordinates", "line_name");
+  for (auto [id, name, what, dim] :
+       {std::tuple(&node_line_, "node_line", "node", dim_node_),
+        std::tuple(&element_line_, "element_line", "element", dim_element_)}) {
+    *id = file_.defineVariable(
+        name, NC_INT, {dim},
+        std::string("line the ") + what + " is on (its number in line; 0 where it is on no line)");
+    file_.putAttribute(*id, "_FillValue", 0);
+    file_.putAttribute(*id, "start_index", 1);
   }
-  for (const int id : {time_, step_number_, step_name_, load_factor_}) file_.writtenInFull(id);
+  node_arc_length_ = file_.defineVariable(
+      "node_arc_length", NC_DOUBLE, {dim_node_},
+      "unstretched arc length along the node's line from the line's start", length_unit_);
+  file_.putAttribute(node_arc_length_, "_FillValue", NC_FILL_DOUBLE);  // nodes on no line
 }
 
 void NetcdfWriter::defineSpectrum(const hydro::WaveSpectrum& s, std::pair<double, double> band) {
@@ -238,6 +297,7 @@ void NetcdfWriter::writeMesh(const model::Model& model) {
     file_.put(node_coordinate_[k], {0}, {nodes}, x.data());
   }
   file_.put(node_index_, {0}, {nodes}, oneBased(nodes).data());
+  file_.put(end_index_, {0}, {2}, oneBased(2).data());
   const size_t elements = element_count_;
   file_.put(element_index_, {0}, {elements}, oneBased(elements).data());
   std::vector<int> counts, nodes_1based;
@@ -258,6 +318,36 @@ void NetcdfWriter::writeMesh(const model::Model& model) {
   }
   file_.put(element_node_count_, {0}, {counts.size()}, counts.data());
   file_.put(element_nodes_, {0}, {nodes_1based.size()}, nodes_1based.data());
+}
+
+void NetcdfWriter::writeLines(const Case& c, const model::Model& model) {
+  if (dim_line_ < 0) return;
+  std::vector<int> node_line(node_count_, 0), element_line(element_count_, 0), anchors;
+  std::vector<double> arc(node_count_, NC_FILL_DOUBLE);
+  size_t number = 0;
+  for (const CaseLine& l : c.named_lines) {
+    if (!l.segment_of.empty()) continue;
+    putText(line_name_, number, l.name);
+    anchors.push_back(l.anchor == CaseLine::Anchor::Start ? 1
+                      : l.anchor == CaseLine::Anchor::End ? 2
+                                                          : 0);
+    ++number;
+    double s = 0.0;  // along the reference (the unstretched line), node to node
+    for (size_t k = 0; k < l.nodes.size(); ++k) {
+      const int n = l.nodes[k];
+      if (k > 0) s += (model.reference().col(n) - model.reference().col(l.nodes[k - 1])).norm();
+      if (node_line[n] != 0) continue;  // where lines meet: the first line's
+      node_line[n] = static_cast<int>(number);
+      arc[n] = s;
+    }
+    for (const int e : l.elements)
+      if (element_line[e] == 0) element_line[e] = static_cast<int>(number);
+  }
+  file_.put(line_index_, {0}, {number}, oneBased(number).data());
+  file_.put(line_anchor_, {0}, {number}, anchors.data());
+  file_.put(node_line_, {0}, {node_line.size()}, node_line.data());
+  file_.put(element_line_, {0}, {element_line.size()}, element_line.data());
+  file_.put(node_arc_length_, {0}, {arc.size()}, arc.data());
 }
 
 // The layout of the first frame's element results: its integration points (with `tension`) and
@@ -282,25 +372,29 @@ void NetcdfWriter::definePoints(const ResultFrame& first) {
     file_.putAttribute(element_point_count_, "sample_dimension", "point");
     point_element_ = file_.defineVariable("point_element", NC_INT, {dim_point_},
                                           "element of the integration point, 1-based");
-    tension_point_ = file_.defineVariable(
-        "tension_point", NC_DOUBLE, {dim_step_, dim_point_},
-        "axial force at the integration points, element by element in element order", force_unit_);
-    file_.writtenInFull(tension_point_);
-    file_.putAttribute(tension_point_, "coordinates",
-                       "step_number step_name load_factor point_element");
   }
-  if (membranes)
-    for (auto [id, name, which] :
-         {std::tuple(&resultant_max_, "membrane_resultant_max", "larger"),
-          std::tuple(&resultant_min_, "membrane_resultant_min", "smaller")}) {
-      *id = file_.defineVariable(name, NC_DOUBLE, {dim_step_, dim_element_},
-                                 std::string(which) +
-                                     " in-plane principal stress resultant of the membrane "
-                                     "(mean over its integration points, per current length)",
-                                 resultant_unit_);
-      file_.putAttribute(*id, "_FillValue", NC_FILL_DOUBLE);  // elements that are not membranes
-      file_.putAttribute(*id, "coordinates", kElementCoordinates);
+  for (Records* r : {&time_, &stage_}) {
+    if (tensions) {
+      r->tension_point = file_.defineVariable(
+          r->prefix + "tension_point", NC_DOUBLE, {r->dim, dim_point_},
+          "axial force at the integration points, element by element in element order",
+          force_unit_);
+      file_.writtenInFull(r->tension_point);
+      file_.putAttribute(r->tension_point, "coordinates", r->point_coordinates);
     }
+    if (membranes)
+      for (auto [id, name, which] :
+           {std::tuple(&r->resultant_max, "membrane_resultant_max", "larger"),
+            std::tuple(&r->resultant_min, "membrane_resultant_min", "smaller")}) {
+        *id = file_.defineVariable(r->prefix + name, NC_DOUBLE, {r->dim, dim_element_},
+                                   std::string(which) +
+                                       " in-plane principal stress resultant of the membrane "
+                                       "(mean over its integration points, per current length)",
+                                   resultant_unit_);
+        file_.putAttribute(*id, "_FillValue", NC_FILL_DOUBLE);  // elements that are not membranes
+        file_.putAttribute(*id, "coordinates", r->element_coordinates);
+      }
+  }
   file_.endDefine();
   if (tensions) {
     file_.put(element_point_count_, {0}, {element_points_.size()}, element_points_.data());
@@ -331,8 +425,8 @@ void NetcdfWriter::requireMatches(const ResultFrame& frame) const {
            " integration points; the file's layout has " + std::to_string(element_points_[e]));
 }
 
-void NetcdfWriter::gatherNodal(const Vector3Variable& v, const model::NodalField& field,
-                               const model::NodalField* plus) {
+void NetcdfWriter::gatherNodal(const Records& r, const Vector3Variable& v,
+                               const model::NodalField& field, const model::NodalField* plus) {
   if (v.id[0] < 0) return;  // not a field of the case's output
   const size_t nodes = node_count_;
   // The field is checked where it is (in cache), not in the record buffers just written
@@ -340,75 +434,76 @@ void NetcdfWriter::gatherNodal(const Vector3Variable& v, const model::NodalField
   // `plus` is the reference, checked once by writeMesh.
   const bool finite = field.allFinite();
   for (int k = 0; k < 3; ++k) {
-    Eigen::Map<Eigen::RowVectorXd> values(file_.slot<double>(v.id[k], records_), nodes);
+    Eigen::Map<Eigen::RowVectorXd> values(file_.slot<double>(v.id[k], r.count), nodes);
     if (plus)
       values = field.row(k) + plus->row(k);
     else
       values = field.row(k);
     if (!finite)
       requireAllFinite(values.data(), nodes, path(), [&](size_t n) {
-        return v.name + kAxis[k] + "[step " + std::to_string(records_) + ", node " +
+        return v.name + kAxis[k] + "[record " + std::to_string(r.count) + ", node " +
                std::to_string(n) + "]";
       });
   }
 }
 
-void NetcdfWriter::gatherTensions(const ResultFrame& frame) {
-  if (tension_end_ < 0) return;  // not a field of the case's output
+void NetcdfWriter::gatherTensions(const Records& r, const ResultFrame& frame) {
+  if (r.tension_end < 0) return;  // not a field of the case's output
   const size_t elements = element_count_;
-  double* ends = file_.slot<double>(tension_end_, records_);
-  double* points = file_.slot<double>(tension_point_, records_);
+  double* ends = file_.slot<double>(r.tension_end, r.count);
+  double* points = file_.slot<double>(r.tension_point, r.count);
   size_t point = 0;
   for (size_t e = 0; e < elements; ++e) {
-    const element::ElementResult& r = frame.elements[e];
-    const bool line = !r.point_tension.empty();  // an axial force applies to lines only
+    const element::ElementResult& result = frame.elements[e];
+    const bool line = !result.point_tension.empty();  // an axial force applies to lines only
     for (int end = 0; end < 2; ++end)
-      ends[2 * e + end] = line ? r.end_tension[end] : NC_FILL_DOUBLE;
+      ends[2 * e + end] = line ? result.end_tension[end] : NC_FILL_DOUBLE;
     const size_t first = point;
-    for (const double t : r.point_tension) points[point++] = t;
+    for (const double t : result.point_tension) points[point++] = t;
     requireAllFinite(points + first, point - first, path(), [&](size_t i) {
-      return "tension_point[step " + std::to_string(records_) + ", point " +
+      return r.prefix + "tension_point[record " + std::to_string(r.count) + ", point " +
              std::to_string(first + i) + "] (element " + std::to_string(e) + ")";
     });
   }
   requireAllFinite(ends, 2 * elements, path(), [&](size_t i) {
-    return "tension_end[step " + std::to_string(records_) + ", element " + std::to_string(i / 2) +
-           ", end " + std::to_string(i % 2) + "]";
+    return r.prefix + "tension_end[record " + std::to_string(r.count) + ", element " +
+           std::to_string(i / 2) + ", end " + std::to_string(i % 2) + "]";
   });
 }
 
-void NetcdfWriter::gatherResultants(const ResultFrame& frame) {
-  if (resultant_max_ < 0) return;
+void NetcdfWriter::gatherResultants(const Records& r, const ResultFrame& frame) {
+  if (r.resultant_max < 0) return;
   const size_t elements = element_count_;
-  double* larger = file_.slot<double>(resultant_max_, records_);
-  double* smaller = file_.slot<double>(resultant_min_, records_);
+  double* larger = file_.slot<double>(r.resultant_max, r.count);
+  double* smaller = file_.slot<double>(r.resultant_min, r.count);
   for (size_t e = 0; e < elements; ++e) {
     const auto n = principalResultants(frame.elements[e]);
     larger[e] = n ? n->first : NC_FILL_DOUBLE;
     smaller[e] = n ? n->second : NC_FILL_DOUBLE;
     requireFinite(larger[e] + smaller[e], path(), [&] {
-      return "membrane_resultant[step " + std::to_string(records_) + ", element " +
+      return r.prefix + "membrane_resultant[record " + std::to_string(r.count) + ", element " +
              std::to_string(e) + "]";
     });
   }
 }
 
-// Modes of a modes step: circular frequencies and mass-normalised shapes, per record (records of
-// other steps keep the netCDF fill value there).
+// Modes of a modes step: circular frequencies and mass-normalised shapes, per stage record
+// (records of other steps keep the netCDF fill value there).
 void NetcdfWriter::defineModes(size_t count) {
   mode_count_ = count;
   file_.redefine();
   dim_mode_ = file_.defineDimension("mode", count);
   const int mode_index = defineIndex("mode", dim_mode_, "mode number in ascending frequency");
-  angular_frequency_ = file_.defineVariable("angular_frequency", NC_DOUBLE, {dim_step_, dim_mode_},
+  angular_frequency_ = file_.defineVariable("angular_frequency", NC_DOUBLE, {stage_.dim, dim_mode_},
                                             "natural circular frequency of the mode", "rad/s");
   file_.putAttribute(angular_frequency_, "_FillValue", NC_FILL_DOUBLE);  // records of other steps
+  file_.putAttribute(angular_frequency_, "coordinates", "stage_step stage_time stage_load_factor");
   // Mass-normalised (phi^T M phi = 1): a shape has the units of mass^-1/2.
-  mode_shape_ = defineVector3("mode_shape", {dim_step_, dim_mode_, dim_node_},
+  mode_shape_ = defineVector3("mode_shape", {stage_.dim, dim_mode_, dim_node_},
                               "component of the mass-normalised mode shape", mass_unit_ + "^-0.5");
   for (const int id : mode_shape_.id) {
     file_.putAttribute(id, "_FillValue", NC_FILL_DOUBLE);
-    file_.putAttribute(id, "coordinates", kNodeCoordinates);
+    file_.putAttribute(id, "coordinates", stage_.node_coordinates);
   }
   file_.endDefine();
   file_.put(mode_index, {0}, {count}, oneBased(count).data());
@@ -416,13 +511,13 @@ void NetcdfWriter::defineModes(size_t count) {
 
 void NetcdfWriter::gatherModes(const ResultFrame& frame) {
   if (frame.frequencies.empty()) return;
-  double* f = file_.slot<double>(angular_frequency_, records_);
+  double* f = file_.slot<double>(angular_frequency_, stage_.count);
   std::copy(frame.frequencies.begin(), frame.frequencies.end(), f);
   requireAllFinite(f, mode_count_, path(),
                    [&](size_t m) { return "angular_frequency[mode " + std::to_string(m) + "]"; });
   const size_t nodes = node_count_;
   for (int k = 0; k < 3; ++k) {
-    double* s = file_.slot<double>(mode_shape_.id[k], records_);
+    double* s = file_.slot<double>(mode_shape_.id[k], stage_.count);
     for (size_t m = 0; m < mode_count_; ++m)
       for (size_t n = 0; n < nodes; ++n) s[m * nodes + n] = frame.mode_shapes[m](k, n);
     requireAllFinite(s, mode_count_ * nodes, path(), [&](size_t i) {
@@ -434,6 +529,20 @@ void NetcdfWriter::gatherModes(const ResultFrame& frame) {
 
 void NetcdfWriter::write(const ResultFrame& frame) {
   requireMatches(frame);
+  Records& r = frame.stage ? stage_ : time_;
+  const model::State& s = *frame.state;
+  const int step = frame.step_index + 1;
+  const auto refuse = [&](const std::string& what) {
+    throw std::runtime_error(path() + ": cannot write step \"" + frame.step_name + "\": " + what);
+  };
+  if (!frame.stage && time_.count > 0 && !(s.time > last_time_))
+    refuse("its time " + formatNumber(s.time) + " is not after the last record's, " +
+           formatNumber(last_time_) + " (the time coordinate increases strictly)");
+  if (frame.stage &&
+      std::find(staged_steps_.begin(), staged_steps_.end(), step) != staged_steps_.end())
+    refuse("step " + std::to_string(step) + " has a stage record already");
+  if (!frame.frequencies.empty() && !frame.stage)
+    refuse("the modes of a modes step are stage records (frame.stage)");
   // The layout first: defining variables writes out what is held.
   if (!layout_defined_ && fields_.needsElementResults()) definePoints(frame);
   if (!frame.frequencies.empty()) {
@@ -444,27 +553,26 @@ void NetcdfWriter::write(const ResultFrame& frame) {
                                "of modes (" +
                                std::to_string(mode_count_) + ")");
   }
-  const model::State& s = *frame.state;
   try {
-    const auto gatherScalar = [&](int variable, const char* name, double value) {
+    const auto gatherScalar = [&](int variable, const std::string& name, double value) {
       requireFinite(value, path(),
-                    [&] { return std::string(name) + "[step " + std::to_string(records_) + "]"; });
-      *file_.slot<double>(variable, records_) = value;
+                    [&] { return name + "[record " + std::to_string(r.count) + "]"; });
+      *file_.slot<double>(variable, r.count) = value;
     };
-    gatherScalar(time_, "time", s.time);
-    gatherScalar(load_factor_, "load_factor", s.load_factor);
-    if (sea_)
+    gatherScalar(r.time, r.prefix + "time", s.time);
+    gatherScalar(r.load_factor, r.prefix + "load_factor", s.load_factor);
+    if (sea_ && !frame.stage)
       gatherScalar(wave_elevation_, "wave_elevation",
                    sea_->elevation(Eigen::Vector3d::Zero(), s.time));
-    gatherNodal(displacement_, s.displacement);
-    gatherNodal(position_, s.displacement, &reference_);
-    gatherNodal(velocity_, s.velocity);
-    gatherNodal(reaction_, frame.reactions);
-    gatherTensions(frame);
-    gatherResultants(frame);
-    gatherModes(frame);
-    *file_.slot<int>(step_number_, records_) = frame.step_index + 1;
-    char* name = file_.slot<char>(step_name_, records_);
+    gatherNodal(r, r.displacement, s.displacement);
+    gatherNodal(r, r.position, s.displacement, &reference_);
+    gatherNodal(r, r.velocity, s.velocity);
+    gatherNodal(r, r.reaction, frame.reactions);
+    gatherTensions(r, frame);
+    gatherResultants(r, frame);
+    gatherModes(frame);  // a stage record's; other records keep the fill value there
+    *file_.slot<int>(r.step_number, r.count) = step;
+    char* name = file_.slot<char>(r.step_name, r.count);
     std::fill_n(std::copy(frame.step_name.begin(), frame.step_name.end(), name),
                 name_length_ - frame.step_name.size(), '\0');
   } catch (...) {
@@ -472,7 +580,11 @@ void NetcdfWriter::write(const ResultFrame& frame) {
     throw;
   }
   file_.commit();
-  ++records_;
+  ++r.count;
+  if (frame.stage)
+    staged_steps_.push_back(step);
+  else
+    last_time_ = s.time;
   file_.sync();
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // One solved state as the writers see it: the state, its element results and support reactions,
-// labelled with the step it closes (or, in a dynamic step, the time it reached).
+// labelled with the step it closes (a stage record) or, in a dynamic step, the time it reached.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +18,9 @@ inline constexpr std::string_view kLastConvergedSuffix = " (last converged)";
 struct ResultFrame {
   int step_index = 0;     // 0-based index of the analysis step in the case
   std::string step_name;  // "relax", "static", ...
+  // A stage record (netcdf_writer.hpp): the state that closes a step that is not dynamic, or
+  // the last converged state of a step that did not converge; else a record of the time axis.
+  bool stage = false;
   const model::State* state = nullptr;
   std::vector<element::ElementResult> elements;
   model::NodalField reactions;  // 3 x nodes; zero at free dofs

@@ -16,8 +16,12 @@ Of a study's DIR/study.nc:
 SPEC is VARIABLE@INDEX, for example
     position_x@node=5            x of node 5 (1-based, as in the file's `node` coordinate)
     speed@node=5                 |velocity| of node 5 (derived from velocity_x/_y/_z)
-    tension_end@element=1,end=1  axial force at the first end of element 1
+    tension_end@element=1,end=1  axial force at the first end of element 1 (end=1 or end=first:
+                                 the element's first node, end=2 or end=last: its last, as the
+                                 file's `end` coordinate says)
     wave_elevation               a record variable without an index
+A series is drawn from the records of the time axis (the dynamic steps') as a line, with the
+states that close the other steps (the `stage` records, at their stage_time) as dots.
 Units and names come from the files' CF attributes. Bad arguments (a variable the file does
 not hold among them): a message naming what is wrong, exit code 2. A figure that cannot be
 written, a Python module missing or any other failure: a one-line message, exit code 4; never a
@@ -45,56 +49,76 @@ from study_figures import draw_extremes, draw_psd, draw_rao
 # Series of a run
 # --------------------------------------------------------------------------------------------
 
+END_WORDS = {"first": 1, "last": 2}
+
+
 def parse_spec(spec):
     name, _, index = spec.partition("@")
     selection = {}
     for part in filter(None, index.split(",")):
         key, _, value = part.partition("=")
+        key, value = key.strip(), value.strip()
+        if key == "end" and value in END_WORDS:
+            selection[key] = END_WORDS[value]
+            continue
         try:
-            selection[key.strip()] = int(value)
+            selection[key] = int(value)
         except ValueError:
-            fail("the index '%s' of %s is not a whole number (expected KEY=N, like node=5)"
-                 % (part, spec))
+            fail("the index '%s' of %s is not a whole number (expected KEY=N, like node=5%s)"
+                 % (part, spec, ", or end=first or end=last" if key == "end" else ""))
     return name.strip(), selection
 
 
-def select(ds, name, selection):
-    """The series of `name` at `selection`, its label and its units."""
-    where = {}
+def record_variable(ds, name, stage):
+    """The variable `name` of the time records, or of the stage records (stage_NAME)."""
+    return ds["stage_" + name] if stage else ds[name]
+
+
+def has_records(ds, name, stage):
+    return ("stage_" + name if stage else name) in ds
+
+
+def select(ds, name, selection, stage=False):
+    """The series of `name` at `selection` (of the stage records when `stage`), its label and its
+    units; None for the stage records when the file has none of that variable."""
+    labelled, positional = {}, {}
     for key, value in selection.items():
-        if key == "end":
-            if value not in (1, 2):
-                fail("end=%d in %s: expected end=1 (first) or end=2 (last)" % (value, name))
-            where[key] = value - 1  # 'end' has no coordinate: 1 = first, 2 = last
-        elif key in ds.indexes:
+        if key == "end" and value not in (1, 2):
+            fail("end=%d in %s: expected end=1 (first) or end=2 (last)" % (value, name))
+        if key in ds.indexes:
             if value not in ds.indexes[key]:
                 fail("%s=%d in %s: no such %s in the file (it has %d to %d)" %
                      (key, value, name, key, ds.indexes[key].min(), ds.indexes[key].max()))
-            where[key] = value
+            labelled[key] = value
+        elif key in ds.dims:  # a dimension without a coordinate: 1-based position
+            positional[key] = value - 1
         else:
             fail("unknown index '%s' in %s" % (key, name))
-    positional = {k: v for k, v in where.items() if k == "end"}
-    labelled = {k: v for k, v in where.items() if k != "end"}
     if name == "speed":
         components = ["velocity" + a for a in ("_x", "_y", "_z")]
         absent = [c for c in components if c not in ds]
         if absent:
             fail("speed is |velocity| and needs velocity_x, _y and _z; the file does not hold "
                  "%s (the case's output: fields: leaves out velocity)" % ", ".join(absent))
-        require_indices(ds[components[0]], "speed", where)
-        parts = [ds[c].sel(labelled) for c in components]
+    elif name not in ds:
+        fail("no variable '%s' in the file (its series: %s)" % (name, record_variables(ds)))
+    source = "velocity_x" if name == "speed" else name
+    require_indices(ds[source], name, selection)
+    if stage and not has_records(ds, source, True):
+        return None
+    if name == "speed":
+        parts = [record_variable(ds, "velocity" + a, stage).sel(labelled).isel(positional)
+                 for a in ("_x", "_y", "_z")]
         values = np.sqrt(sum(p ** 2 for p in parts))
         units = ds["velocity_x"].attrs.get("units", "")
         long_name = "speed"
-    elif name in ds:
-        require_indices(ds[name], name, where)
-        values = ds[name].sel(labelled).isel(positional)
+    else:
+        values = record_variable(ds, name, stage).sel(labelled).isel(positional)
         units = ds[name].attrs.get("units", "")
         long_name = ds[name].attrs.get("long_name", name)
-    else:
-        fail("no variable '%s' in the file (its series: %s)" % (name, record_variables(ds)))
-    if set(values.dims) - {"time"}:
-        fail("%s needs an index for %s" % (name, ", ".join(sorted(set(values.dims) - {"time"}))))
+    extra = set(values.dims) - {"time", "stage"}
+    if extra:
+        fail("%s needs an index for %s" % (name, ", ".join(sorted(extra))))
     where_text = ", ".join("%s %d" % kv for kv in selection.items())
     label = long_name + (" (" + where_text + ")" if where_text else "")
     return values, label, units
@@ -121,9 +145,10 @@ def default_specs(ds):
     if "tension_end" in ds:
         specs.append(("max_tension", {}))
     displacement = ["displacement" + a for a in ("_x", "_y", "_z")]
-    if all(d in ds for d in displacement):
-        moved = np.sqrt(sum(ds[d] ** 2 for d in displacement))
-        node = int(moved.max("time").argmax())
+    stage = ds.sizes.get("time", 0) == 0
+    if all(has_records(ds, d, stage) for d in displacement):
+        moved = np.sqrt(sum(record_variable(ds, d, stage) ** 2 for d in displacement))
+        node = int(moved.max("stage" if stage else "time").argmax())
         specs.append(("displacement_magnitude", {"node": int(ds.node[node])}))
     left_out = [what for what, present in (
         ("the largest end tension (no tension_end)", "tension_end" in ds),
@@ -140,12 +165,16 @@ def default_specs(ds):
     return specs
 
 
-def default_series(ds, name, selection):
+def default_series(ds, name, selection, stage=False):
+    needed = "tension_end" if name == "max_tension" else "displacement_x"
+    if stage and not has_records(ds, needed, True):
+        return None
     if name == "max_tension":
-        return (ds.tension_end.max(("element", "end")), "largest end tension over the elements",
-                ds.tension_end.attrs.get("units", ""))
+        return (record_variable(ds, "tension_end", stage).max(("element", "end")),
+                "largest end tension over the elements", ds.tension_end.attrs.get("units", ""))
     node = selection["node"]
-    parts = [ds["displacement" + a].sel(node=node) for a in ("_x", "_y", "_z")]
+    parts = [record_variable(ds, "displacement" + a, stage).sel(node=node)
+             for a in ("_x", "_y", "_z")]
     return (np.sqrt(sum(p ** 2 for p in parts)), "displacement magnitude (node %d)" % node,
             ds.displacement_x.attrs.get("units", ""))
 
@@ -154,31 +183,33 @@ def draw_series(ds, args):
     if ds.sizes.get("time", 0) == 0:
         fail("%s holds no records (no time)" % args.result)
     specs = [parse_spec(s) for s in args.series]
-    panels, short_names = [], []
+    panels, stages, short_names = [], [], []
     for name, selection in specs or default_specs(ds):
         short_names.append(name.replace("_", " "))
         if specs:
             panels.append(select(ds, name, selection))
+            stages.append(select(ds, name, selection, stage=True))
         else:
             panels.append(default_series(ds, name, selection))
+            stages.append(default_series(ds, name, selection, stage=True))
 
     time_units = ds.time.attrs.get("units", "s")
     plt = pyplot()
     figure, axes = plt.subplots(len(panels), 1, sharex=True, squeeze=False,
                                 figsize=(8.0, 2.2 + 1.9 * len(panels)), constrained_layout=True)
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    dynamic = np.concatenate([[False], np.diff(ds.time.values) > 0])
-    for k, ((values, label, units), short) in enumerate(zip(panels, short_names)):
+    for k, ((values, label, units), stage, short) in enumerate(zip(panels, stages, short_names)):
         ax = axes[k][0]
-        t = ds.time.values
-        y, units = in_force_units(np.asarray(values), units)
+        raw = np.asarray(values, dtype=float)
+        largest = np.abs(raw[np.isfinite(raw)]).max() if np.isfinite(raw).any() else 0.0
+        y, shown_units = in_force_units(raw, units, largest)
         colour = colours[k % len(colours)]
-        line = dynamic | np.roll(dynamic, -1)
-        ax.plot(t[line], y[line], color=colour, linewidth=1.4, label=textwrap.fill(label, 60))
-        if (~dynamic).any():
-            ax.plot(t[~dynamic], y[~dynamic], "o", color=colour, markersize=3.5,
-                    label="end of a static step" if k == 0 else None)
-        ax.set_ylabel("%s [%s]" % (short, units) if units else short)
+        ax.plot(ds.time.values, y, color=colour, linewidth=1.4, label=textwrap.fill(label, 60))
+        if stage is not None and ds.sizes.get("stage", 0) > 0:
+            stage_y, _ = in_force_units(np.asarray(stage[0], dtype=float), units, largest)
+            ax.plot(ds.stage_time.values, stage_y, "o", color=colour, markersize=3.5,
+                    label="state closing a step that is not dynamic" if k == 0 else None)
+        ax.set_ylabel("%s [%s]" % (short, shown_units) if shown_units else short)
         ax.grid(True, alpha=0.3)
         ax.legend(loc="best", fontsize="small", frameon=False)
     axes[-1][0].set_xlabel("time [%s]" % time_units)
@@ -281,6 +312,9 @@ def last_dynamic_record(ds, values, start):
 def draw_spectrum(ds, args):
     name, selection = parse_spec(args.spectrum)
     values, label, units = select(ds, name, selection)
+    if ds.sizes["time"] == 0:
+        fail("the spectrum needs the records of a dynamic step; the file has none (only the "
+             "states closing its other steps, `stage`)")
     x, dt = last_dynamic_record(ds, values, args.start)
     x, units = in_force_units(x, units)
     time_units = ds.time.attrs.get("units", "s")
@@ -378,19 +412,26 @@ def draw_shapes(ds, args):
     plane = args.plane
     if len(plane) != 2 or any(a not in "xyz" for a in plane) or plane[0] == plane[1]:
         fail("--plane %s: expected two of x, y, z, like xz" % plane)
-    t = ds.time.values
+    if "position_x" not in ds:
+        fail("--shapes: the file has no position_x (the case's output: fields: leaves out "
+             "position)")
+    # Every record, the stage records (steps that are not dynamic) first: at a time both have,
+    # the later record in the run is drawn.
+    records = [(float(t), True, i) for i, t in enumerate(ds.stage_time.values)]
+    records += [(float(t), False, i) for i, t in enumerate(ds.time.values)]
+    records.sort(key=lambda r: r[0])
+    t = np.array([r[0] for r in records])
+    if t.size == 0:
+        fail("--shapes: the file has no records")
     time_units = ds.time.attrs.get("units", "s")
     spacing = np.min(np.diff(t)[np.diff(t) > 0]) if np.any(np.diff(t) > 0) else 0.0
-    records = []
+    chosen = []
     for time in times:
         if time < t.min() - spacing or time > t.max() + spacing:
             fail("--shapes: the time %g %s is outside the records (%g to %g %s)" %
                  (time, time_units, t.min(), t.max(), time_units))
         nearest = np.abs(t - time)
-        records.append(int(np.flatnonzero(nearest == nearest.min())[-1]))  # the last of equals
-    if "position_x" not in ds:
-        fail("--shapes: the file has no position_x (the case's output: fields: leaves out "
-             "position)")
+        chosen.append(records[int(np.flatnonzero(nearest == nearest.min())[-1])])
     polylines = element_polylines(ds)
     units = ds["position_x"].attrs.get("units", "")
     plt = pyplot()
@@ -398,12 +439,13 @@ def draw_shapes(ds, args):
 
     figure, ax = plt.subplots(figsize=(9.0, 5.5), constrained_layout=True)
     colours = plt.cm.viridis(np.linspace(0.0, 0.9, len(times)))
-    for record, colour in zip(records, colours):
-        u = ds["position_" + plane[0]].isel(time=record).values
-        v = ds["position_" + plane[1]].isel(time=record).values
+    for (time, stage, record), colour in zip(chosen, colours):
+        dim = "stage" if stage else "time"
+        u = record_variable(ds, "position_" + plane[0], stage).isel({dim: record}).values
+        v = record_variable(ds, "position_" + plane[1], stage).isel({dim: record}).values
         segments = [np.column_stack([u[p], v[p]]) for p in polylines]
-        step = str(ds.step_name.values[record]) if "step_name" in ds else ""
-        label = "t = %g %s%s" % (t[record], time_units, " (%s)" % step if step else "")
+        names = ds.stage_step if stage else ds.step_name
+        label = "t = %g %s (%s)" % (time, time_units, str(names.values[record]))
         ax.add_collection(LineCollection(segments, colors=[colour], linewidths=1.4, label=label))
         ax.plot(u, v, "o", color=colour, markersize=2.0)
     ax.autoscale()

@@ -58,10 +58,20 @@ def complete(ds):
     return np.ones(ds.sizes["member"], dtype=bool)
 
 
+def length_units(ds):
+    """The study's length unit: the first of its unit_system, "US (ft, slug, s, lbf)" (m for a
+    file that does not say)."""
+    system = ds.attrs.get("unit_system", "")
+    inside = system.partition("(")[2].partition(")")[0]
+    return inside.split(",")[0].strip() or "m"
+
+
 def wave_amplitude(ds, text):
-    """Half the wave height: a parameter's values per member, or a number for all."""
+    """Half the wave height: a parameter's values per member, or a number for all (in the
+    study's length unit)."""
     if text in ds and "member" in ds[text].dims:
-        return 0.5 * np.asarray(ds[text].values, dtype=float), ds[text].attrs.get("units", "m")
+        return (0.5 * np.asarray(ds[text].values, dtype=float),
+                ds[text].attrs.get("units", length_units(ds)))
     try:
         height = float(text)
     except ValueError:
@@ -69,7 +79,7 @@ def wave_amplitude(ds, text):
              "parameter (the study's: %s)" % (text, ", ".join(study_parameters(ds)) or "none"))
     if not height > 0.0:
         fail("--wave-height %s: expected a height > 0" % text)
-    return np.full(ds.sizes["member"], 0.5 * height), "m"
+    return np.full(ds.sizes["member"], 0.5 * height), length_units(ds)
 
 
 def groups_of(ds, group, option):

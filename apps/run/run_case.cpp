@@ -2,6 +2,7 @@
 
 #include <sched.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <optional>
@@ -120,9 +121,11 @@ RunOutcome runCase(const Case& c, const RunOptions& options, std::ostream& log,
   if (out.exit_code == kNotConverged)
     diag << "  last converged state written to " << out.netcdf_path << "\n";
   log << "summary (" << unitNames(c.units).length << ", " << unitNames(c.units).force << "):\n";
+  size_t width = 23;  // names in a column at least one blank wider than the longest
+  for (const auto& [name, value] : out.summary) width = std::max(width, name.size());
   for (size_t k = 0; k < out.summary.size(); ++k)
-    log << "  " << std::left << std::setw(24) << out.summary[k].first << std::setprecision(8)
-        << out.summary[k].second << " " << units[k].second << "\n";
+    log << "  " << std::left << std::setw(static_cast<int>(width) + 1) << out.summary[k].first
+        << std::setprecision(8) << out.summary[k].second << " " << units[k].second << "\n";
   // Drawn last, from the file in place; a figure of an earlier run that this one does not draw
   // is removed.
   std::error_code ec;

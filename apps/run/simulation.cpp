@@ -64,6 +64,9 @@ ResultFrame Simulation::frame(int i, std::string name, const model::State& s) co
 void Simulation::fill(int i, std::string name, const model::State& s, ResultFrame& f,
                       Results results) const {
   f.step_index = i;
+  // A dynamic step's frames are records of the time axis; the others' closing frames are stage
+  // records (a frame of a step that did not converge is made one by run()).
+  f.stage = c_.steps[i].kind != StepSpec::Kind::Dynamic;
   f.step_name = std::move(name);
   f.state = &s;
   f.pending = nullptr;
@@ -124,7 +127,8 @@ ResultFrame Simulation::modes(int i, const model::State& state) {
   return f;
 }
 
-// Streams every output_every-th accepted state; progress every tenth of the duration. The
+// Streams its first state (see record's condition), every output_every-th accepted state and
+// the last; progress every tenth of the duration. The
 // summary quantities taken over the step's time see its first state and every accepted one.
 ResultFrame Simulation::dynamic(int i, model::State& state) {
   const StepSpec& step = c_.steps[i];
@@ -141,15 +145,17 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
   const Results results = !needed                                               ? Results::None
                           : sinks_.size() == 1 && sinks_[0]->completesResults() ? Results::Pending
                                                                                 : Results::Now;
+  const auto record = [&](const model::State& s) {
+    fill(i, step.name, s, streamed, results);
+    take(streamed);
+    last_record_time_ = s.time;
+  };
   auto on_step = [&](const model::State& s) {
     ++accepted;
     series.sample(s);
     for (StateObserver* o : observers_) o->accepted(i, s, *assembler_);
     const bool last = s.time >= end - 1e-9 * std::max(1.0, duration);
-    if (accepted % step.output_every == 0 || last) {
-      fill(i, step.name, s, streamed, results);
-      take(streamed);
-    }
+    if (accepted % step.output_every == 0 || last) record(s);
     if (s.time >= next_report - 1e-12 || last) {
       log_ << "  t = " << std::setprecision(6) << s.time << " s (" << std::setprecision(3)
            << 100.0 * (s.time - start) / duration << "%), " << accepted << " steps" << std::endl;
@@ -160,6 +166,9 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
   integrator.start(state);
   series.sample(state);
   for (StateObserver* o : observers_) o->accepted(i, state, *assembler_);
+  // The step's first state starts its records, unless the time axis has its time already (a
+  // dynamic step ended there): time stays strictly increasing.
+  if (!(state.time <= last_record_time_)) record(state);
   // Each time step ends at its segment's start plus (k + 1) dt, computed, so the records' times
   // are the schedule's to the last bit (a sum of 6,000 steps of 0.1 s is 1e-12 s off).
   double segment_start = start;
@@ -192,7 +201,10 @@ SimulationResult Simulation::run() {
     } catch (const solve::ConvergenceError& e) {
       diag_ << "flexmoor: step " << i + 1 << " (" << spec.name << ", " << spec.where.file << ":"
             << spec.where.line << ") did not converge: " << e.what() << std::endl;
-      write(frame(static_cast<int>(i), spec.name + std::string(kLastConvergedSuffix), state));
+      ResultFrame last =
+          frame(static_cast<int>(i), spec.name + std::string(kLastConvergedSuffix), state);
+      last.stage = true;  // its time may be a time record's already
+      write(last);
       flush();
       out.exit_code = kNotConverged;
       break;

@@ -3,6 +3,7 @@
 // flexmoor command wraps it (run_case.hpp: the files, the lock, the summary and the figure), and
 // tests, studies and later the C API and the Python bindings run a case with it without the
 // binary, collecting what they need through their own sinks (memory_sink.hpp).
+#include <limits>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -39,8 +40,9 @@ class Simulation {
   Simulation& operator=(const Simulation&) = delete;
   ~Simulation();
 
-  // Every record (each finished step's closing state, a dynamic step's every output_every-th
-  // accepted state, and the last converged state of a step that fails) goes to every sink.
+  // Every record goes to every sink: each finished step's closing state (a stage record, but a
+  // dynamic step's), a dynamic step's first state, every output_every-th accepted state and its
+  // last, and the last converged state of a step that fails (a stage record).
   void addSink(ResultSink& sink) { sinks_.push_back(&sink); }
   // Every accepted state of every dynamic step, its first state included, goes to every observer.
   void addObserver(StateObserver& observer) { observers_.push_back(&observer); }
@@ -86,6 +88,8 @@ class Simulation {
   std::map<int, double> over_time_;  // summary index -> value over a dynamic step's time
   solve::SolveLog slog_;
   bool streamed_ = false;  // the last step (a dynamic one) wrote its closing state already
+  // The time of the last record of the time axis (-infinity before the first).
+  double last_record_time_ = -std::numeric_limits<double>::infinity();
 };
 
 }  // namespace flexmoor::app

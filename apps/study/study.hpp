@@ -31,6 +31,7 @@ struct CollectSpec {
   std::vector<Statistic> statistics;
   std::optional<MpmSpec> mpm;
   std::optional<double> segment;  // Welch's segment, s; none: no spectrum
+  std::string units;              // of the quantity in the members' cases ("ft", "lbf", "in")
 };
 
 // A value a member sets: the case value at `path` ("waves.spectrum.Hs") becomes `value`.
@@ -51,8 +52,8 @@ struct StudyMember {
 struct StudyParameter {
   std::string path;                // as written: "waves.spectrum.Hs"
   std::string name;                // waves_spectrum_Hs
-  bool numeric = true;             // every member's value a number: double, in SI
-  std::string units;               // CF units of a numeric value with a dimension, else ""
+  bool numeric = true;             // every member's value a number: double, in the case's units
+  std::string units;               // CF units of a numeric value ("1" for none), else ""
   std::vector<double> numbers;     // of each member, when numeric
   std::vector<std::string> texts;  // of each member, as written
 };
@@ -60,8 +61,9 @@ struct StudyParameter {
 struct Study {
   std::string file;  // the study file as given
   std::string title;
-  std::string base_case;  // the base case's path (relative to the working directory)
-  std::string case_name;  // the base case's name: the members' output files are <name>.*
+  std::string base_case;    // the base case's path (relative to the working directory)
+  std::string case_name;    // the base case's name: the members' output files are <name>.*
+  std::string unit_system;  // the base case's, "US (ft, slug, s, lbf)": the units of study.nc
   std::vector<StudyMember> members;
   std::vector<StudyParameter> parameters;
   std::vector<CollectSpec> collect;

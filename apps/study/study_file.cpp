@@ -144,6 +144,9 @@ int writeStudyFile(const Study& study, const std::string& dir) {
     file.putAttribute(NC_GLOBAL, "title", study.title);
     file.putAttribute(NC_GLOBAL, "study_file", study.file);
     file.putAttribute(NC_GLOBAL, "base_case", study.base_case);
+    // The base case's units: the parameters' and, unless a collect: entry gives unit:, the
+    // statistics' (each variable states its own).
+    file.putAttribute(NC_GLOBAL, "unit_system", study.unit_system);
     std::vector<std::string> parameter_names;
     for (const StudyParameter& p : study.parameters) parameter_names.push_back(p.name);
     file.putAttribute(NC_GLOBAL, "study_parameters", joined(parameter_names));
@@ -197,7 +200,7 @@ int writeStudyFile(const Study& study, const std::string& dir) {
       example = nullptr;
       for (const auto& s : series)
         if (s && !example) example = &s->variables[k];
-      const std::string units = example ? example->units : "";
+      const std::string units = example && !example->units.empty() ? example->units : c.units;
       const std::string window = example ? windowText(*example, "s") : "";
       for (const StatisticInfo& info : writtenStatistics()) {
         if (std::find(c.statistics.begin(), c.statistics.end(), info.statistic) ==

@@ -245,7 +245,7 @@ void checkSpectrumSegments(Diagnostics& diag, const std::vector<CollectSpec>& co
 
 // Every member's case built and checked; the collect: entries' problems reported for the first
 // member they are found in only.
-void checkMembers(Diagnostics& diag, const Study& study, std::string& case_name) {
+void checkMembers(Diagnostics& diag, Study& study, std::string& case_name, UnitSystem& units) {
   bool collect_reported = false;
   for (const StudyMember& m : study.members) {
     Diagnostics collect_diag(study.file);
@@ -257,6 +257,9 @@ void checkMembers(Diagnostics& diag, const Study& study, std::string& case_name)
     }
     if (!member) continue;
     case_name = member->c.name;
+    units = member->c.units;
+    for (size_t k = 0; k < member->collect.size() && k < study.collect.size(); ++k)
+      study.collect[k].units = member->collect[k].unit;
     const auto stepOf = [&member](const SummarySpec& s) {
       return s.step < 0 ? static_cast<int>(member->c.steps.size()) - 1 : s.step;
     };
@@ -301,12 +304,15 @@ Study readStudy(const std::string& path) {
   }
   diag.throwIfAny();
   std::string case_name;
-  checkMembers(diag, study, case_name);
+  UnitSystem units = UnitSystem::SI;
+  const QuantityMarks marks;  // the dimensions the members' cases read their values as
+  checkMembers(diag, study, case_name, units);
   diag.throwIfAny();
   study.case_name = case_name;
+  study.unit_system = unitSystemName(units);
   const std::string base_text = fileText(study.base_case);
   for (StudyMember& m : study.members) m.hash = memberHash(base_text, m, study.collect);
-  study.parameters = studyParameters(study.members, base->root);
+  study.parameters = studyParameters(study.members, base->root, marks, units);
   return study;
 }
 

@@ -40,15 +40,21 @@ TEST(DynamicRun, StreamsEveryNthStepOfAScheduleAndReportsProgress) {
   size_t records = 0;
   ASSERT_EQ(nc_inq_dimid(file, "time", &step_dim), NC_NOERR);
   ASSERT_EQ(nc_inq_dimlen(file, step_dim, &records), NC_NOERR);
-  // The static and the modes step's records, then accepted steps 4, 8, ..., 60 of the dynamic
-  // step.
-  ASSERT_EQ(records, 2u + 15u);
+  // The dynamic step's first state, then its accepted steps 4, 8, ..., 60; the static and the
+  // modes step's states are the stage records of steps 1 and 2, at time 0.
+  ASSERT_EQ(records, 1u + 15u);
   const std::vector<double> time = readVariable(file, "time", records);
   EXPECT_DOUBLE_EQ(time[0], 0.0);
-  EXPECT_DOUBLE_EQ(time[1], 0.0);
-  for (size_t k = 1; k <= 10; ++k) EXPECT_NEAR(time[k + 1], 0.02 * k, 1e-12) << k;  // dt 0.005
+  for (size_t k = 1; k <= 10; ++k) EXPECT_NEAR(time[k], 0.02 * k, 1e-12) << k;  // dt 0.005
   for (size_t k = 11; k <= 15; ++k)
-    EXPECT_NEAR(time[k + 1], 0.2 + 0.04 * (k - 10), 1e-12) << k;  // dt 0.01
+    EXPECT_NEAR(time[k], 0.2 + 0.04 * (k - 10), 1e-12) << k;  // dt 0.01
+  int stage_dim = -1;
+  size_t stages = 0;
+  ASSERT_EQ(nc_inq_dimid(file, "stage", &stage_dim), NC_NOERR);
+  ASSERT_EQ(nc_inq_dimlen(file, stage_dim, &stages), NC_NOERR);
+  ASSERT_EQ(stages, 2u);
+  EXPECT_EQ(readVariable(file, "stage", stages), (std::vector<double>{1.0, 2.0}));
+  EXPECT_EQ(readVariable(file, "stage_time", stages), (std::vector<double>{0.0, 0.0}));
   nc_close(file);
 
   // Pretension and first mode: E A (lambda^2 - 1) / 2 lambda with lambda = 1.001, and the
@@ -89,11 +95,17 @@ TEST(DynamicRun, TheOutputFieldsListedAreTheOnlyOnesWrittenAndTheSameNumbers) {
   int full = -1, lean = -1;
   ASSERT_EQ(nc_open((full_dir / "driven-taut-cable.nc").c_str(), NC_NOWRITE, &full), NC_NOERR);
   ASSERT_EQ(nc_open((lean_dir / "driven-taut-cable.nc").c_str(), NC_NOWRITE, &lean), NC_NOERR);
-  const size_t values = 17 * 9;  // records x nodes
-  for (const char* name : {"position_x", "position_z", "velocity_z"})
+  const size_t values = 16 * 9, stage_values = 2 * 9;  // records x nodes
+  for (const char* name : {"position_x", "position_z", "velocity_z"}) {
     EXPECT_EQ(readVariable(full, name, values), readVariable(lean, name, values)) << name;
+    const std::string stage = std::string("stage_") + name;
+    EXPECT_EQ(readVariable(full, stage.c_str(), stage_values),
+              readVariable(lean, stage.c_str(), stage_values))
+        << stage;
+  }
   int var = -1;
-  for (const char* absent : {"displacement_x", "reaction_x", "tension_end", "tension_point"})
+  for (const char* absent : {"displacement_x", "reaction_x", "tension_end", "tension_point",
+                             "stage_displacement_x", "stage_tension_end"})
     EXPECT_EQ(nc_inq_varid(lean, absent, &var), NC_ENOTVAR) << absent;
   nc_close(full);
   nc_close(lean);

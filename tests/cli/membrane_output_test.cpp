@@ -69,7 +69,8 @@ TEST(MembraneOutput, PrincipalResultantsInNetcdfVtkAndSummaryMatchClosedForm) {
   int file = -1;
   ASSERT_EQ(nc_open((dir / "stretched-sheet.nc").c_str(), NC_NOWRITE, &file), NC_NOERR);
   const size_t elements = 2 + 8;  // the hem's two cables, then the sheet's eight triangles
-  for (const char* name : {"membrane_resultant_max", "membrane_resultant_min"}) {
+  // The static step's state: a stage record.
+  for (const char* name : {"stage_membrane_resultant_max", "stage_membrane_resultant_min"}) {
     int var = -1;
     ASSERT_EQ(nc_inq_varid(file, name, &var), NC_NOERR) << name;
     std::vector<double> n(elements);

@@ -104,7 +104,8 @@ TEST(Cli, NonConvergenceExitsWith3AndKeepsTheLastConvergedState) {
   ASSERT_EQ(nc_open((dir / "diverge.nc").c_str(), NC_NOWRITE, &nc), NC_NOERR);
   int record_dim = -1, node_dim = -1;
   size_t records = 0, nodes = 0;
-  ASSERT_EQ(nc_inq_unlimdim(nc, &record_dim), NC_NOERR);
+  // The last converged state is the stage record of the step that did not converge.
+  ASSERT_EQ(nc_inq_dimid(nc, "stage", &record_dim), NC_NOERR);
   ASSERT_EQ(nc_inq_dimlen(nc, record_dim, &records), NC_NOERR);
   ASSERT_EQ(nc_inq_dimid(nc, "node", &node_dim), NC_NOERR);
   ASSERT_EQ(nc_inq_dimlen(nc, node_dim, &nodes), NC_NOERR);
@@ -114,7 +115,7 @@ TEST(Cli, NonConvergenceExitsWith3AndKeepsTheLastConvergedState) {
 
   int name_var = -1, name_dims[2];
   size_t name_length = 0;
-  ASSERT_EQ(nc_inq_varid(nc, "step_name", &name_var), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(nc, "stage_step", &name_var), NC_NOERR);
   ASSERT_EQ(nc_inq_vardimid(nc, name_var, name_dims), NC_NOERR);
   ASSERT_EQ(nc_inq_dimlen(nc, name_dims[1], &name_length), NC_NOERR);
   std::string step_name(name_length, '\0');
@@ -126,8 +127,8 @@ TEST(Cli, NonConvergenceExitsWith3AndKeepsTheLastConvergedState) {
   int x_var = -1;
   ASSERT_EQ(nc_inq_varid(nc, "node_x", &x_var), NC_NOERR);
   ASSERT_EQ(nc_get_var_double(nc, x_var, x.data()), NC_NOERR);
-  const std::vector<double> ux = lastRecord(nc, "displacement_x", last, nodes);
-  const std::vector<double> uz = lastRecord(nc, "displacement_z", last, nodes);
+  const std::vector<double> ux = lastRecord(nc, "stage_displacement_x", last, nodes);
+  const std::vector<double> uz = lastRecord(nc, "stage_displacement_z", last, nodes);
   const flexmoor::model::NodalField& X = cable.model->reference();
   double worst = 0.0;
   for (size_t k = 0; k < nodes; ++k) {

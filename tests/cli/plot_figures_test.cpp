@@ -65,9 +65,9 @@ TEST(PlotFigures, SpectrumOfASeriesAgainstTheTargetOfItsSea) {
   const CliRun elevation = plot(nc.string() + " -o " + (dir / "sea.png").string() +
                                 " --spectrum wave_elevation --segment 50");
   ASSERT_EQ(elevation.exit_code, 0) << elevation.output;
-  // 800 records of 0.25 s (those of time steps cut short interpolated onto 0.25 s, as said),
-  // segments of 200 samples overlapping by half: 7 of them.
-  EXPECT_NE(elevation.output.find("spectrum of 800 samples, 7 segments"), std::string::npos)
+  // The dynamic step's first state and 800 records of 0.25 s (those of time steps cut short
+  // interpolated onto 0.25 s, as said), segments of 200 samples overlapping by half: 7 of them.
+  EXPECT_NE(elevation.output.find("spectrum of 801 samples, 7 segments"), std::string::npos)
       << elevation.output;
   EXPECT_NE(elevation.errors.find("interpolated onto dt = 0.25"), std::string::npos)
       << elevation.errors;

@@ -45,4 +45,31 @@ TEST(Plot, RefusesASeriesTheFileDoesNotHold) {
       << unindexed.output;
 }
 
+// An element's end reads the same in the plot as in the case files: end=1 and end=first the
+// first node's (the file's end coordinate, sel(end=1)), end=2 and end=last the last's; the values
+// are the file's own (compared exactly with xarray's isel on the end dimension).
+TEST(Plot, SeriesEndsAreFirstLastOneOrTwo) {
+  const auto dir = flexmoor::test::scratch("plot-ends");
+  ASSERT_EQ(flexmoor("run driven-taut-cable -o " + dir.string() + " --no-figure").exit_code, 0);
+  const std::string script =
+      "import sys; sys.path.insert(0, '" FLEXMOOR_SOURCE_DIR
+      "/apps/plot'); import numpy as np, xarray as xr, flexmoor_plot as p; "
+      "ds = xr.open_dataset(sys.argv[1]); "
+      "s = lambda spec: p.select(ds, *p.parse_spec(spec))[0].values; "
+      "t = ds.tension_end.sel(element=4); "
+      "print(np.array_equal(s('tension_end@element=4,end=1'), t.isel(end=0).values), "
+      "np.array_equal(s('tension_end@element=4,end=first'), t.isel(end=0).values), "
+      "np.array_equal(s('tension_end@element=4,end=2'), t.isel(end=1).values), "
+      "np.array_equal(s('tension_end@element=4,end=last'), t.isel(end=1).values), "
+      "np.array_equal(t.isel(end=0).values, t.isel(end=1).values))";
+  const auto r = flexmoor::test::command("/usr/bin/python3 -c \"" + script + "\" " +
+                                         (dir / "driven-taut-cable.nc").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output, "True True True True False\n");  // the two ends differ: a real choice
+  const auto bad = plot((dir / "driven-taut-cable.nc").string() + " -o " +
+                        (dir / "x.png").string() + " --series tension_end@element=4,end=middle");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.output.find("or end=first or end=last"), std::string::npos) << bad.output;
+}
+
 }  // namespace

@@ -19,7 +19,7 @@ using flexmoor::test::readFile;
 using flexmoor::test::scratch;
 
 // Example 1 with one relaxation step allowed: it cannot reach equilibrium (exit 3). The last
-// record of diverge.nc, put in place, is the last converged state, named so.
+// stage record of diverge.nc, put in place, is the last converged state, named so.
 TEST(RunDiagnostics, NonConvergenceIsDiagnosedOnStderrWithTheLastConvergedStateInPlace) {
   const fs::path dir = scratch("diverge-stderr");
   std::string text =
@@ -40,7 +40,7 @@ TEST(RunDiagnostics, NonConvergenceIsDiagnosedOnStderrWithTheLastConvergedStateI
   int nc = -1, dim = -1, var = -1;
   size_t records = 0;
   ASSERT_EQ(nc_open((dir / "diverge.nc").c_str(), NC_NOWRITE, &nc), NC_NOERR);
-  ASSERT_EQ(nc_inq_dimid(nc, "time", &dim), NC_NOERR);
+  ASSERT_EQ(nc_inq_dimid(nc, "stage", &dim), NC_NOERR);
   ASSERT_EQ(nc_inq_dimlen(nc, dim, &records), NC_NOERR);
   ASSERT_GE(records, 1u);
   size_t length = 0;  // name_strlen: the longest name the file holds
@@ -48,7 +48,7 @@ TEST(RunDiagnostics, NonConvergenceIsDiagnosedOnStderrWithTheLastConvergedStateI
   ASSERT_EQ(nc_inq_dimlen(nc, dim, &length), NC_NOERR);
   std::string name(length, '\0');
   const size_t start[2] = {records - 1, 0}, count[2] = {1, length};
-  ASSERT_EQ(nc_inq_varid(nc, "step_name", &var), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(nc, "stage_step", &var), NC_NOERR);
   ASSERT_EQ(nc_get_vara_text(nc, var, start, count, name.data()), NC_NOERR);
   nc_close(nc);
   EXPECT_NE(name.find("(last converged)"), std::string::npos) << name;

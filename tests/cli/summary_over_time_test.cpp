@@ -83,7 +83,7 @@ std::string run(const std::string& name, int output_every) {
 }
 
 // at: 1.01 s lies between steps 40 (t = 1 s) and 41 (1.025 s), written as records 40 and 41
-// (record 0 is the static step's). Its value is their chord to round-off (tolerance 1e-17 m,
+// (record 0 is the dynamic step's first state, t = 0). Its value is their chord to round-off (tolerance 1e-17 m,
 // 1e-15 A); it is also the chord of the discrete solution A cos(n theta) (measured 4e-17 m,
 // tolerance 1e-16 m), and it differs from A cos(w t) by the chord's sag near the crest,
 // -f (1 - f) (w dt)^2 / 2 A = -2.96e-3 A at f = 0.4, less the phase lag's +0.8e-3 A: -2.2e-3 A

@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "apps/case/diagnostics.hpp"
+#include "apps/study/member_case.hpp"
 #include "tests/study/study_cases.hpp"
 #include "tests/support/cli_run.hpp"
+#include "tests/support/hanging_masses.hpp"
 
 namespace flexmoor::test {
 namespace {
@@ -231,6 +233,57 @@ TEST(StudyReader, NamedStudiesAreValid) {
   EXPECT_EQ(oc4.parameters[0].name, "waves_spectrum_Hs");
   EXPECT_EQ(oc4.parameters[0].numbers, (std::vector<double>{2, 2, 2, 4, 4, 4, 6, 6, 6}));
   EXPECT_EQ(oc4.parameters[2].numbers, (std::vector<double>{1, 2, 3, 1, 2, 3, 1, 2, 3}));
+  EXPECT_EQ(oc4.parameters[0].units, "m");
+  EXPECT_EQ(oc4.parameters[2].units, "1");  // the seed, a count
+  EXPECT_EQ(oc4.collect[0].units, "N");
+  // Its fairleads by line (line: line_k, end: fairlead): the last element of each line's 12.
+  const app::MemberCase member = app::buildMember(oc4, oc4.members[0]);
+  ASSERT_EQ(member.collect.size(), 3u);
+  for (size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(member.collect[k].element, static_cast<int>(12 * k + 11)) << k;
+    EXPECT_EQ(member.collect[k].end, 1) << k;
+  }
+  // A US case's study: its periods and its statistics in the case's units (the RAO's ft/ft).
+  const Study tube =
+      app::readStudy(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/studies/tube-rao.yaml");
+  EXPECT_EQ(tube.unit_system, "US (ft, slug, s, lbf)");
+  EXPECT_EQ(tube.parameters[0].units, "s");
+  EXPECT_EQ(tube.collect[1].units, "ft");
+}
+
+// The parameters are in the base case's units, the statistics' units: a US case's values given
+// in SI units are converted (exact factors: 0.3048 m to the ft, 4.4482216152605 N to the lbf,
+// their ratio in kg to the slug; 1e-15 relative), a plain number is the case's own (the mass's
+// "1" is 1 slug, the stiffness's "50" 50 lbf/ft), a count has units "1".
+TEST(StudyReader, ParametersAreInTheBaseCasesUnits) {
+  const auto dir = scratch("study-reader-us-units");
+  std::string us = hangingMassesCase();
+  us.replace(us.find("units: SI"), 9, "units: US");
+  writeText(dir, "osc.yaml",
+            us + "  - dynamic: {dt: 0.00314159265359 s, steps: 400, release: [{node: 2, dofs: "
+                 "[z]}], tolerance: 1e-8}\n");
+  const std::string study = writeText(dir, "study.yaml", oscillatorStudy(R"(list:
+  - {loads.gravity.g: 10 m/s^2, elements.1.mass: 10 kg, elements.0.stiffness: 1000 N/m,
+     steps.1.dynamic.steps: 400}
+  - {loads.gravity.g: 32 ft/s^2, elements.1.mass: 1, elements.0.stiffness: 50,
+     steps.1.dynamic.steps: 200}
+)"))
+                                .string();
+  const Study s = app::readStudy(study);
+  EXPECT_EQ(s.unit_system, "US (ft, slug, s, lbf)");
+  ASSERT_EQ(s.parameters.size(), 4u);
+  const auto expect = [](const app::StudyParameter& p, const std::string& units,
+                         std::vector<double> values) {
+    EXPECT_EQ(p.units, units) << p.path;
+    ASSERT_EQ(p.numbers.size(), values.size()) << p.path;
+    for (size_t i = 0; i < values.size(); ++i)
+      EXPECT_NEAR(p.numbers[i], values[i], 1e-15 * values[i]) << p.path << " " << i;
+  };
+  expect(s.parameters[0], "ft s-2", {10.0 / 0.3048, 32.0});
+  expect(s.parameters[1], "slug", {10.0 / (4.4482216152605 / 0.3048), 1.0});
+  expect(s.parameters[2], "lbf ft-1", {1000.0 / 4.4482216152605 * 0.3048, 50.0});
+  expect(s.parameters[3], "1", {400.0, 200.0});
+  EXPECT_EQ(s.collect[0].units, "ft");
 }
 
 }  // namespace

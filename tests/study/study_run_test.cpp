@@ -215,7 +215,8 @@ collect:
 }
 
 // study.nc as xarray reads it: the parameters are coordinates of the statistics, with their
-// units and paths; status carries its flags; failed members are NaN (their _FillValue).
+// units and paths; status carries its flags; failed members are NaN (their _FillValue); the
+// statistics and the parameters in the base case's units, which the file names.
 TEST(StudyRun, XarrayReadsStudyNcWithTheParametersAsCoordinates) {
   const fs::path dir = studyDir("xarray", kFailingGrid);
   runStudy(dir);
@@ -230,6 +231,8 @@ print('params', d.attrs['study_parameters'])
 print('flags', d['status'].attrs['flag_meanings'])
 print('nan', list(np.isnan(v.values)))
 print('psd', d['drop_psd'].dims, d['frequency'].attrs['units'])
+print('stat units', v.attrs['units'], d['steps_1_dynamic_max_iterations'].attrs['units'],
+      d.attrs['unit_system'])
 )";
   writeText(dir, "check.py", script);
   const std::string cmd = "/usr/bin/python3 " + (dir / "check.py").string() + " " +
@@ -249,6 +252,8 @@ print('psd', d['drop_psd'].dims, d['frequency'].attrs['units'])
   EXPECT_NE(text.find("flags complete bad_input not_converged failed"), std::string::npos) << text;
   EXPECT_NE(text.find("nan [False, True, False, True]"), std::string::npos) << text;
   EXPECT_NE(text.find("psd ('member', 'frequency') rad s-1"), std::string::npos) << text;
+  // Every variable states its units, the base case's (SI here): a count or ratio "1".
+  EXPECT_NE(text.find("stat units m 1 SI (m, kg, s, N)"), std::string::npos) << text;
 }
 
 // A 2-rank MPI run and a 2-worker local run give the same study.nc: every double variable

@@ -258,7 +258,7 @@ TEST(CaseReaderSea, NetcdfStatesTheTargetSpectrumAndTheElevation) {
   size_t records = 0;
   ASSERT_EQ(nc_inq_dimid(jonswap, "time", &time_dimension), NC_NOERR);
   ASSERT_EQ(nc_inq_dimlen(jonswap, time_dimension, &records), NC_NOERR);
-  ASSERT_EQ(records, 7u);  // the static step and 6 dynamic ones
+  ASSERT_EQ(records, 7u);  // the dynamic step's first state and its 6 steps (the static: stage)
   std::vector<double> t(records), e(records);
   ASSERT_EQ(nc_get_var_double(jonswap, time, t.data()), NC_NOERR);
   ASSERT_EQ(nc_get_var_double(jonswap, eta, e.data()), NC_NOERR);

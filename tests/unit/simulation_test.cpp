@@ -69,8 +69,13 @@ TEST(Simulation, RunsACaseInProcessAsTheCommandDoes) {
   app::MemorySink first, second;
   const app::SimulationResult a = runInProcess(c, first);
   ASSERT_EQ(a.exit_code, app::kSuccess);
-  ASSERT_EQ(first.frames().size(), 601u);
+  // The held state (a stage record), the release's first state and its 600 time steps.
+  ASSERT_EQ(first.frames().size(), 602u);
   EXPECT_EQ(first.frames().front().step_name, "held");
+  EXPECT_TRUE(first.frames().front().stage);
+  EXPECT_EQ(first.frames()[1].step_name, "released");
+  EXPECT_FALSE(first.frames()[1].stage);
+  EXPECT_EQ(first.frames()[1].state->time, 0.0);
   EXPECT_NEAR(first.frames().back().state->time, 3.0, 1e-12);
   const std::string json = runNamedCase("ex8-relaxation-test");
   for (const auto& [name, value] : a.summary) EXPECT_EQ(value, summaryValue(json, name)) << name;
@@ -99,7 +104,7 @@ TEST(Simulation, RecordTimesAreTheSchedulesExactly) {
     EXPECT_EQ(t, expected);
     ++checked;
   }
-  EXPECT_EQ(checked, 15);  // 10 of the first schedule, 5 of the second
+  EXPECT_EQ(checked, 16);  // the step's first state, 10 of the first schedule, 5 of the second
 }
 
 TEST(Simulation, RecordsCompletedOnTheWritingThreadAreTheRunThreadsOnes) {

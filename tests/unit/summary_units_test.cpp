@@ -60,5 +60,30 @@ TEST(SummaryUnits, ReactionsOfOtherModelsAreForces) {
   EXPECT_EQ(unitOf(c, "support"), "lbf");
 }
 
+// `unit:` reports a quantity in a unit of its dimension: the value's scale is the case unit's
+// size in it (12 in to the ft and 12 in/s to the ft/s, times a scale: given; 1 lbf =
+// 4.4482216152605 N by definition), to round-off (1e-15 relative), and the unit is named as
+// given; without it, the case's unit and scale 1.
+TEST(SummaryUnits, AUnitOfTheQuantitysDimensionScalesTheValue) {
+  const Case c = readCase(test::writeCase("report-units.yaml", tube("cable") + R"(
+  radial_in: {quantity: displacement_x, node: 2, unit: in}
+  speed_in: {quantity: speed, node: 2, unit: in/s, scale: 2}
+  axial_kn: {quantity: reaction_z, node: 1, unit: kN}
+)"));
+  const auto spec = [&](const std::string& name) -> const SummarySpec& {
+    for (const SummarySpec& s : c.summary)
+      if (s.name == name) return s;
+    throw std::runtime_error("no " + name);
+  };
+  EXPECT_EQ(spec("radial_in").unit, "in");
+  EXPECT_NEAR(spec("radial_in").scale, 12.0, 12.0 * 1e-15);
+  EXPECT_EQ(spec("speed_in").unit, "in/s");
+  EXPECT_NEAR(spec("speed_in").scale, 24.0, 24.0 * 1e-15);
+  EXPECT_EQ(spec("axial_kn").unit, "kN");
+  EXPECT_NEAR(spec("axial_kn").scale, 4.4482216152605e-3, 4.4482216152605e-3 * 1e-15);
+  EXPECT_EQ(spec("radial").unit, "ft");
+  EXPECT_EQ(spec("radial").scale, 1.0);
+}
+
 }  // namespace
 }  // namespace flexmoor::app

@@ -42,11 +42,15 @@ struct Buoy {
   double x1, z1, x3, z3, speed_max, tension_max, held_tension;
 };
 
+// The summary is in the case's units (ft, ft/s, lbf); the checks below in inches, 12 to the foot.
 Buoy run(const std::string& name) {
   const std::string json = runCaseText(name, caseText(name));
-  return {summaryValue(json, "buoy_x_t1"),          summaryValue(json, "buoy_z_t1"),
-          summaryValue(json, "buoy_x_t3"),          summaryValue(json, "buoy_z_t3"),
-          summaryValue(json, "buoy_speed_max"),     summaryValue(json, "anchor_tension_max"),
+  EXPECT_NE(json.find("\"buoy_x_t1\": \"ft\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"buoy_speed_max\": \"ft/s\""), std::string::npos) << json;
+  const double in = 12.0;
+  return {in * summaryValue(json, "buoy_x_t1"),      in * summaryValue(json, "buoy_z_t1"),
+          in * summaryValue(json, "buoy_x_t3"),      in * summaryValue(json, "buoy_z_t3"),
+          in * summaryValue(json, "buoy_speed_max"), summaryValue(json, "anchor_tension_max"),
           summaryValue(json, "held_anchor_tension")};
 }
 

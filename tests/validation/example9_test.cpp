@@ -170,7 +170,7 @@ TEST_F(Example9, MovesAsTheDissertationReports) {
     z10.push_back(u(2, n10));
     xc.push_back((u(0, n1) + u(0, n4) + u(0, n7) + u(0, n10)) / 4.0);
   }
-  ASSERT_EQ(x1.size(), 230u);
+  ASSERT_EQ(x1.size(), 231u);  // the step's first state and its 230 time steps
   const double sway = correlation(x1, x7), roll = correlation(z4, z10),
                centre = correlation(xc, x1);
   std::cout << "correlations: sway (x1, x7) " << sway << ", roll (z4, z10) " << roll

@@ -25,10 +25,11 @@ struct LineForces {
 
 LineForces line(const std::string& json, int k) {
   const std::string n = std::to_string(k);
-  return {summaryValue(json, "fairlead_tension_" + n),
-          summaryValue(json, "fairlead_horizontal_" + n),
-          summaryValue(json, "fairlead_vertical_" + n), summaryValue(json, "anchor_tension_" + n),
-          summaryValue(json, "length_on_seabed_" + n)};
+  return {summaryValue(json, "fairlead_tension_static_" + n),
+          summaryValue(json, "fairlead_horizontal_static_" + n),
+          summaryValue(json, "fairlead_vertical_static_" + n),
+          summaryValue(json, "anchor_tension_static_" + n),
+          summaryValue(json, "length_on_seabed_static_" + n)};
 }
 
 // OC3's line (docs/theory.md#oc3-hywind): spans 853.87 - 5.2 m and 320 - 70 m, L = 902.2 m, w = 698.09 N/m

@@ -26,7 +26,7 @@ mooring_lines:
 double fairleadTension(const std::string& name, const std::string& text) {
   const InProcessRun r = runCaseInProcess(name, text);
   EXPECT_EQ(r.exit_code, app::kSuccess) << r.log;
-  return r.value("fairlead_tension_1");
+  return r.value("fairlead_tension_static_1");
 }
 
 TEST(StillWaterStatics, WavesStayOutOfTheEquilibriumUnlessFrozen) {

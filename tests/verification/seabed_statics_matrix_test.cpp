@@ -55,7 +55,7 @@ Outcome solve(const Line& line, int order, int elements, double bed) {
   Outcome out;
   out.converged = r.exit_code == app::kSuccess;
   out.log = r.log;
-  if (out.converged) out.tension = r.value("fairlead_tension_1");
+  if (out.converged) out.tension = r.value("fairlead_tension_static_1");
   return out;
 }
 
