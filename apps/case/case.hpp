@@ -2,6 +2,7 @@
 // A case as read from its YAML file: the model it builds, the analysis steps to run in order, and
 // the summary quantities it declares. Everything is in the case's consistent unit system.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -45,22 +46,29 @@ struct StepSpec {
   solve::StaticOptions statics;
   solve::ModalOptions modes;
   solve::DynamicOptions dynamic;
-  int output_every = 1;  // dynamic: write every N-th accepted time step (the last one always)
+  int output_every = 1;  // dynamic, fixed steps: write every N-th accepted time step (and the last)
+  // Dynamic, adaptive steps: write a record every output_interval of the step's time (interpolated
+  // between the steps around it) and its last state.
+  double output_interval = 0.0;
   // Supports let go at the start of the step (node, component): a held buoy released. They stay
   // free in the steps after.
   std::vector<std::pair<int, int>> release;
   SourceLocation where;
 
-  // A dynamic step's time: the sum of its schedule's dt x steps; 0 for the other kinds.
+  bool adaptive() const { return kind == Kind::Dynamic && dynamic.adaptive.has_value(); }
+  // A dynamic step's time: its duration, or the sum of its schedule's dt x steps; 0 for the other
+  // kinds.
   double duration() const {
+    if (adaptive()) return dynamic.adaptive->duration;
     double t = 0.0;
     if (kind == Kind::Dynamic)
       for (const solve::TimeSegment& segment : dynamic.schedule) t += segment.dt * segment.steps;
     return t;
   }
   // The records a dynamic step streams: every output_every-th of its time steps (about: the last
-  // one is always written); 0 for the other kinds.
+  // one is always written), or one every output_interval; 0 for the other kinds.
   long streamedRecords() const {
+    if (adaptive()) return std::lround(duration() / output_interval);
     long steps = 0;
     if (kind == Kind::Dynamic)
       for (const solve::TimeSegment& segment : dynamic.schedule) steps += segment.steps;

@@ -297,8 +297,19 @@ std::vector<Forcing> periodicForcing(const CaseBuilder& b) {
   return periodic;
 }
 
+// Adaptive steps: dt_max, when the case gives none, a tenth of the shortest period that drives
+// the model (the local error of a step that strides over a forcing period need not show it).
+void boundAdaptiveSteps(StepSpec& step, const std::vector<Forcing>& periodic) {
+  solve::AdaptiveSteps& a = *step.dynamic.adaptive;
+  if (a.dt_max > 0.0) return;
+  for (const Forcing& f : periodic) {
+    const double bound = f.period / kStepsPerPeriod;
+    if (a.dt_max == 0.0 || bound < a.dt_max) a.dt_max = bound;
+  }
+}
+
 void checkTimeStep(CaseBuilder& b, const StepSpec& step, const std::vector<Forcing>& periodic) {
-  double dt = 0.0;
+  double dt = step.adaptive() ? step.dynamic.adaptive->dt_max : 0.0;
   for (const solve::TimeSegment& s : step.dynamic.schedule) dt = std::max(dt, s.dt);
   const std::string time = unitNames(b.c.units).time;
   for (const Forcing& f : periodic) {
@@ -322,7 +333,7 @@ void checkSteps(CaseBuilder& b) {
   const std::vector<double> mass =
       needs_mass ? dofMass(b, massless_sections) : std::vector<double>();
   const std::vector<Forcing> periodic = periodicForcing(b);
-  for (const StepSpec& step : b.c.steps) {
+  for (StepSpec& step : b.c.steps) {
     if (step.kind == StepSpec::Kind::Modes || step.kind == StepSpec::Kind::Dynamic)
       checkMass(b, step, mass, massless_sections);
     if (step.kind == StepSpec::Kind::Modes && step.modes.modes > b.model.equationCount())
@@ -330,6 +341,7 @@ void checkSteps(CaseBuilder& b) {
                                         std::to_string(step.modes.modes) + ", expected at most " +
                                         std::to_string(b.model.equationCount()) + ")");
     if (step.kind == StepSpec::Kind::Dynamic) checkTimeStep(b, step, periodic);
+    if (step.adaptive()) boundAdaptiveSteps(step, periodic);
   }
 }
 

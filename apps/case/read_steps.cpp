@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/read_time_span.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -165,46 +166,6 @@ void readModes(CaseBuilder& b, Fields& f, solve::ModalOptions& o) {
   o.tolerance = b.in.quantityOr(f, "tolerance", kind::kNumber, Limit::Positive, o.tolerance);
 }
 
-// One segment {dt, steps} of a time schedule.
-std::optional<solve::TimeSegment> readSegment(CaseBuilder& b, Fields& f) {
-  const YAML::Node* dt = f.require("dt");
-  const YAML::Node* steps = f.require("steps");
-  const auto h = dt ? b.in.quantity(*dt, f.path("dt"), kind::kTime, Limit::Positive) : std::nullopt;
-  const auto count = steps ? b.in.integer(*steps, f.path("steps"), 1) : std::nullopt;
-  if (!h || !count) return std::nullopt;
-  return solve::TimeSegment{*h, *count};
-}
-
-// schedule: [{dt, steps}, ...], or dt and steps in the step itself for one segment.
-void readSchedule(CaseBuilder& b, Fields& f, std::vector<solve::TimeSegment>& schedule) {
-  const YAML::Node* list = f.find("schedule");
-  const bool direct = f.find("dt") || f.find("steps");
-  if (list && direct) {
-    b.diag.error(*list, f.path("schedule") +
-                            ": given with dt/steps (expected either schedule: [{dt, steps}, ...] "
-                            "or dt and steps for one segment)");
-    return;
-  }
-  if (!list) {
-    if (!direct) {
-      if (f.isMap())
-        b.diag.error(f.node(), f.path() +
-                                   ": missing key 'schedule' (expected schedule: "
-                                   "[{dt, steps}, ...] or dt and steps)");
-      return;
-    }
-    if (const auto segment = readSegment(b, f)) schedule.push_back(*segment);
-    return;
-  }
-  const std::vector<YAML::Node> items = listItems(b.diag, *list, f.path("schedule"));
-  if (items.empty() && (list->IsNull() || list->IsSequence()))
-    b.diag.error(*list, f.path("schedule") + ": no segments (expected at least one {dt, steps})");
-  for (size_t i = 0; i < items.size(); ++i) {
-    Fields segment(b.diag, items[i], itemPath(f.path("schedule"), i), {"dt", "steps"});
-    if (const auto s = readSegment(b, segment)) schedule.push_back(*s);
-  }
-}
-
 // True when an earlier step of the case sets a load factor (relax, static and dynamic steps do;
 // modes steps do not).
 bool loadFactorSetBefore(const CaseBuilder& b) {
@@ -216,7 +177,7 @@ bool loadFactorSetBefore(const CaseBuilder& b) {
 void readDynamic(CaseBuilder& b, Fields& f, StepSpec& step) {
   Input& in = b.in;
   solve::DynamicOptions& o = step.dynamic;
-  readSchedule(b, f, o.schedule);
+  readTimeSpan(b, f, step);
   // The load factor held through the step: given, or the one the previous step left; 1 when no
   // earlier step sets one, so that gravity and the loads without a history act.
   if (const YAML::Node* n = f.find("load_factor"))
@@ -259,7 +220,6 @@ void readDynamic(CaseBuilder& b, Fields& f, StepSpec& step) {
               *n, f.path("load_matrices"),
               {{"step", Update::Step}, {"iteration", Update::Iteration}, {"off", Update::Off}})
             .value_or(o.load_matrices);
-  step.output_every = in.integerOr(f, "output_every", 1, step.output_every);
 }
 
 // release: [{node: REF, dofs: [x, z]}, ...]: supports let go when the step starts. Each dof must be
@@ -320,10 +280,13 @@ const std::vector<std::string>& keysOf(StepSpec::Kind kind) {
             "max_increments", "pressure_stiffness", "release", "waves"});
   static const std::vector<std::string> modes = {"name", "count",     "shift",
                                                  "mass", "tolerance", "release"};
-  static const std::vector<std::string> dynamic =
-      with({"name", "load_factor", "schedule", "dt", "steps", "gamma", "beta", "hht_alpha", "mass",
-            "rayleigh", "max_step_cuts", "output_every", "pressure_stiffness", "load_matrices",
-            "release"});
+  static const std::vector<std::string> dynamic = [&] {
+    std::vector<std::string> keys =
+        with({"name", "load_factor", "gamma", "beta", "hht_alpha", "mass", "rayleigh",
+              "max_step_cuts", "pressure_stiffness", "load_matrices", "release"});
+    keys.insert(keys.end(), timeSpanKeys().begin(), timeSpanKeys().end());
+    return keys;
+  }();
   switch (kind) {
     case StepSpec::Kind::Relax:
       return relax;

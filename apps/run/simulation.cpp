@@ -6,6 +6,7 @@
 
 #include "apps/output/summary_quantities.hpp"
 #include "apps/output/summary_series.hpp"
+#include "apps/run/record_interpolator.hpp"
 #include "libstruct/solve/modal.hpp"
 #include "libstruct/solve/static_solver.hpp"
 #include "libstruct/solve/time_integrator.hpp"
@@ -127,9 +128,10 @@ ResultFrame Simulation::modes(int i, const model::State& state) {
   return f;
 }
 
-// Streams its first state (see record's condition), every output_every-th accepted state and
-// the last; progress every tenth of the duration. The
-// summary quantities taken over the step's time see its first state and every accepted one.
+// Streams its first state (see record's condition), then every output_every-th accepted state
+// (fixed steps) or a state every output_interval (adaptive steps), and the last; progress every
+// tenth of the duration. The summary quantities taken over the step's time see its first state
+// and every accepted one.
 ResultFrame Simulation::dynamic(int i, model::State& state) {
   const StepSpec& step = c_.steps[i];
   const double duration = step.duration();
@@ -150,17 +152,49 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
     take(streamed);
     last_record_time_ = s.time;
   };
-  auto on_step = [&](const model::State& s) {
-    ++accepted;
-    series.sample(s);
-    for (StateObserver* o : observers_) o->accepted(i, s, *assembler_);
-    const bool last = s.time >= end - 1e-9 * std::max(1.0, duration);
-    if (accepted % step.output_every == 0 || last) record(s);
+  const double tiny = 1e-9 * std::max(1.0, duration);
+  const auto progress = [&](const model::State& s, bool last) {
     if (s.time >= next_report - 1e-12 || last) {
       log_ << "  t = " << std::setprecision(6) << s.time << " s (" << std::setprecision(3)
            << 100.0 * (s.time - start) / duration << "%), " << accepted << " steps" << std::endl;
       next_report += 0.1 * duration;
     }
+  };
+  const auto accept = [&](const model::State& s) {
+    ++accepted;
+    series.sample(s);
+    for (StateObserver* o : observers_) o->accepted(i, s, *assembler_);
+  };
+  // Fixed steps: every output_every-th accepted state and the last.
+  const auto on_step = [&](const model::State& s) {
+    accept(s);
+    const bool last = s.time >= end - tiny;
+    if (accepted % step.output_every == 0 || last) record(s);
+    progress(s, last);
+  };
+  // Adaptive steps: a record every output_interval, between the two steps around its time
+  // (RecordInterpolator) unless a step lands on it, and the last. The summary's series sees the
+  // accepted steps only, as with fixed steps: each is a converged state.
+  RecordInterpolator between(*assembler_);
+  model::State interpolated;
+  int output_index = 1;
+  const auto output_time = [&] { return start + output_index * step.output_interval; };
+  const auto on_adaptive_step = [&](const model::State& s) {
+    between.accepted(s);
+    for (; output_time() < s.time - tiny; ++output_index) {
+      interpolated = between.state(output_time());
+      fill(i, step.name, interpolated, streamed, Results::None);
+      if (results != Results::None)
+        between.results(output_time(), streamed.elements, streamed.reactions);
+      take(streamed);
+      last_record_time_ = interpolated.time;
+    }
+    accept(s);
+    const bool last = s.time >= end - tiny;
+    const bool on_output = std::abs(s.time - output_time()) <= tiny;
+    if (on_output) ++output_index;
+    if (on_output || last) record(s);
+    progress(s, last);
   };
   solve::TimeIntegrator integrator(*assembler_, step.dynamic, slog_);
   integrator.start(state);
@@ -169,19 +203,26 @@ ResultFrame Simulation::dynamic(int i, model::State& state) {
   // The step's first state starts its records, unless the time axis has its time already (a
   // dynamic step ended there): time stays strictly increasing.
   if (!(state.time <= last_record_time_)) record(state);
-  // Each time step ends at its segment's start plus (k + 1) dt, computed, so the records' times
-  // are the schedule's to the last bit (a sum of 6,000 steps of 0.1 s is 1e-12 s off).
-  double segment_start = start;
-  for (const solve::TimeSegment& segment : step.dynamic.schedule) {
-    for (int k = 0; k < segment.steps; ++k)
-      integrator.stepTo(state, segment_start + (k + 1) * segment.dt, on_step);
-    segment_start += segment.steps * segment.dt;
+  if (step.adaptive()) {
+    between.accepted(state);
+    integrator.advanceTo(state, end, on_adaptive_step);
+  } else {
+    // Each time step ends at its segment's start plus (k + 1) dt, computed, so the records'
+    // times are the schedule's to the last bit (a sum of 6,000 steps of 0.1 s is 1e-12 s off).
+    double segment_start = start;
+    for (const solve::TimeSegment& segment : step.dynamic.schedule) {
+      for (int k = 0; k < segment.steps; ++k)
+        integrator.stepTo(state, segment_start + (k + 1) * segment.dt, on_step);
+      segment_start += segment.steps * segment.dt;
+    }
   }
   const solve::DynamicReport& r = integrator.report();
   for (const auto& [spec, value] : series.values()) over_time_[spec] = value;
   log_ << "  " << r.steps << " time steps, " << r.iterations << " Newton iterations, "
        << r.tangent_updates << " tangent updates, " << r.backtracks << " backtracks, " << r.cuts
-       << " step cuts\n";
+       << " step cuts";
+  if (step.adaptive()) log_ << ", " << r.rejections << " steps taken again for their error";
+  log_ << "\n";
   streamed_ = true;
   return frame(i, step.name, state);
 }

@@ -5,9 +5,13 @@
 //   N = (k_b delta - phi c_b u'.n) d,   f_n = N n      (k_b in Pa/m, c_b in Pa s/m)
 // where the damping's share phi = min(1, delta / (kDampingDepth d)) makes the force continuous as
 // a point touches down (MoorDyn's full c_b from delta = 0 on makes it jump by c_b |u'.n| d, which
-// no Newton iteration can converge across: a chain landing at 0.5 m/s jumps by 15 kN/m). Beyond
-// 1% of the diameter, far less than a chain's resting penetration on any but the stiffest beds,
-// it is MoorDyn's law (the Hunt-Crossley idea of a damping that grows with the penetration).
+// no Newton iteration can converge across: a chain landing at 0.5 m/s jumps by 15 kN/m). Over
+// the ramp the damping adds c_b |u'.n| / (kDampingDepth d) to the contact's stiffness; at 10% of
+// the diameter that stays of the order of k_b at the speeds a line lands with (OC4's chain at
+// 0.2 m/s: 7.8e6 against 3e6 Pa/m), where at 1% it was 26 times k_b and a time step of 0.4 s
+// cycled about the ramp's end until it was cut. Beyond the ramp it is MoorDyn's law (the
+// Hunt-Crossley idea of a damping that grows with the penetration); it matters only while a point
+// moves across the bed's normal, and a line resting on the bed is carried by the spring alone.
 // Friction opposes the velocity along the bed, v_t = u' - (u'.n) n, as Coulomb's law with a
 // smooth start: f_t = -mu max(N, 0) v_t / sqrt(|v_t|^2 + v_s^2), mu N as soon as the line slides
 // faster than the slip speed v_s. It is not MoorDyn's FrictionCoefficient, which acts through
@@ -22,7 +26,7 @@
 namespace flexmoor::hydro {
 
 // The penetration, as a fraction of the line's width, over which the bed's damping comes in.
-inline constexpr double kDampingDepth = 0.01;
+inline constexpr double kDampingDepth = 0.1;
 
 struct SeabedProperties {
   double stiffness = 3.0e6;  // k_b, Pa/m (MoorDyn's default kBot)

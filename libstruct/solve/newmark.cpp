@@ -9,6 +9,8 @@ DynamicReport integrate(const model::Assembler& assembler, model::State& state,
                         const std::function<void(const model::State&)>& on_step) {
   TimeIntegrator integrator(assembler, options, log);
   integrator.start(state);
+  if (options.adaptive)
+    integrator.advanceTo(state, state.time + options.adaptive->duration, on_step);
   for (const TimeSegment& segment : options.schedule)
     for (int k = 0; k < segment.steps; ++k) integrator.step(state, segment.dt, on_step);
   return integrator.report();

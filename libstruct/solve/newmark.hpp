@@ -11,7 +11,8 @@
 
 namespace flexmoor::solve {
 
-// Integrates from state.time over the schedule (a loop of TimeIntegrator::step), at options.load_factor when it is set (else at the
+// Integrates from state.time over the schedule (a loop of TimeIntegrator::step), or over
+// options.adaptive's duration in steps of its choosing, at options.load_factor when it is set (else at the
 // state's). The start acceleration is the one the state carries when an earlier integration
 // accepted it under the same load factor and equation of motion (state.motion), and is solved for
 // from equilibrium otherwise. `on_step` sees every accepted state. On failure throws

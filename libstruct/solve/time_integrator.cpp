@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "libstruct/solve/equilibrium.hpp"
+#include "libstruct/solve/step_control.hpp"
 
 namespace flexmoor::solve {
 namespace {
@@ -241,6 +242,22 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   return false;
 }
 
+void TimeIntegrator::fail(const model::State& s, double h, const IterationRecord& rec) const {
+  std::ostringstream m;
+  m << "time step at t = " << s.time << " s did not converge even with dt = " << h << " s ("
+    << rec.iteration << " iterations, displacement norm " << rec.displacement_norm << ", residual "
+    << rec.residual_norm << "): ";
+  if (singular_)
+    m << "the effective tangent K + M / (beta dt^2) is singular: a free dof has neither mass "
+         "nor stiffness";
+  else
+    m << trace_.diagnosis(log_);
+  if (trace_.lost())
+    m << " (a displacement running away there is a motion nothing resists: a mechanism, a "
+         "slack line, or a load the structure cannot carry)";
+  throw ConvergenceError(m.str(), rec);
+}
+
 void TimeIntegrator::advance(model::State& s, double h, int depth,
                              const std::function<void(const model::State&)>& on_step) {
   IterationRecord rec{report_.steps + 1, 0, s.load_factor, 0.0, 0.0};
@@ -250,21 +267,7 @@ void TimeIntegrator::advance(model::State& s, double h, int depth,
     if (on_step) on_step(s);
     return;
   }
-  if (depth >= o_.max_step_cuts) {
-    std::ostringstream m;
-    m << "time step at t = " << s.time << " s did not converge even with dt = " << h << " s ("
-      << rec.iteration << " iterations, displacement norm " << rec.displacement_norm
-      << ", residual " << rec.residual_norm << "): ";
-    if (singular_)
-      m << "the effective tangent K + M / (beta dt^2) is singular: a free dof has neither mass "
-           "nor stiffness";
-    else
-      m << trace_.diagnosis(log_);
-    if (trace_.lost())
-      m << " (a displacement running away there is a motion nothing resists: a mechanism, a "
-           "slack line, or a load the structure cannot carry)";
-    throw ConvergenceError(m.str(), rec);
-  }
+  if (depth >= o_.max_step_cuts) fail(s, h, rec);
   ++report_.cuts;
   std::ostringstream m;
   m << "t = " << s.time << " s: Newton failed with dt = " << h << " s, halving";
@@ -273,23 +276,109 @@ void TimeIntegrator::advance(model::State& s, double h, int depth,
   advance(s, 0.5 * h, depth + 1, on_step);
 }
 
+// Zienkiewicz and Xie's estimate of the step's displacement error, e = h^2 (beta - 1/6)
+// (u''_n+1 - u''_n), against the displacement the step made, |e| / |u_n+1 - u_n| over the free
+// dofs: for a motion of frequency omega, (omega h)^2 / 12 (average acceleration), the step's
+// relative phase error. (Against the forces, K e, the stiff axial vibrations that Newmark filters
+// out, and that a line's tensions hardly feel, would set the step.)
+double TimeIntegrator::localError(double h) const {
+  const double e =
+      (h * h * std::abs(beta_ - 1.0 / 6.0)) * (scratch_.acceleration - scratch_.acc_n).norm();
+  const double du = (scratch_.u - scratch_.u_n).norm();
+  const double floor = 1e-12 * assembler_.elementSize();  // a structure at rest
+  return e / std::max(du, floor) / o_.adaptive->tolerance;
+}
+
+void TimeIntegrator::adaptiveSteps(model::State& s, double t_end,
+                                   const std::function<void(const model::State&)>& on_step) {
+  const AdaptiveSteps& a = *o_.adaptive;
+  const double dt_min = a.dt_min > 0.0 ? a.dt_min : 1e-9 * a.duration;
+  const double dt_max = a.dt_max > 0.0 ? a.dt_max : a.duration;
+  if (!(h_ > 0.0)) h_ = std::min(dt_max, a.dt_start > 0.0 ? a.dt_start : 1e-4 * a.duration);
+  bool retried = false;
+  while (s.time < t_end) {
+    const double remaining = t_end - s.time;
+    double h = std::min(h_, dt_max);
+    const bool landing = h >= remaining * (1.0 - 1e-12);
+    if (landing)
+      h = remaining;  // the last step lands on t_end
+    else if (h > 0.5 * remaining)
+      h = 0.5 * remaining;  // two steps of half the rest rather than one and a sliver
+    const model::State start = s;
+    const int steps_since_update = steps_since_update_;
+    const double force_scale = force_scale_;
+    const int iterations = report_.iterations;
+    IterationRecord rec{report_.steps + 1, 0, s.load_factor, 0.0, 0.0};
+    if (!attempt(s, h, rec)) {
+      if (h <= dt_min) fail(s, h, rec);
+      ++report_.cuts;
+      std::ostringstream m;
+      m << "t = " << s.time << " s: Newton failed with dt = " << h << " s, halving";
+      log_.say(m.str());
+      h_ = std::max(0.5 * h, dt_min);
+      retried = true;
+      continue;
+    }
+    const double error = localError(h);
+    // The step the error asks for, as if the step meant had been taken: one shortened to land
+    // has (h / meant)^3 of its error.
+    const double meant = std::max(h, std::min(h_, dt_max));
+    const double next = StepControl::next(meant, error * std::pow(meant / h, 3),
+                                          report_.iterations - iterations, retried);
+    if (!StepControl::accepts(error) && h > dt_min) {
+      s = start;
+      steps_since_update_ = steps_since_update;
+      force_scale_ = force_scale;
+      kept_.valid = false;
+      ++report_.rejections;
+      h_ = std::clamp(std::min(next, 0.9 * h), dt_min, dt_max);
+      retried = true;
+      continue;
+    }
+    ++report_.steps;
+    log_.report(rec);
+    if (on_step) on_step(s);
+    h_ = std::clamp(next, dt_min, dt_max);
+    retried = false;
+  }
+}
+
 void TimeIntegrator::step(model::State& s, double dt,
                           const std::function<void(const model::State&)>& on_step) {
   stepTo(s, s.time + dt, on_step);
 }
 
-void TimeIntegrator::stepTo(model::State& s, double t_end,
-                            const std::function<void(const model::State&)>& on_step) {
-  const double dt = t_end - s.time;
+void TimeIntegrator::setTargets(const model::State& s, double t_end) {
   end_time_ = t_end;
   for (auto& [dof, t] : targets_) {
     t.start_u = s.displacement(dof.second, dof.first);
     t.start_v = s.velocity(dof.second, dof.first);
     t.start_time = s.time;
-    t.duration = dt;
+    t.duration = t_end - s.time;
   }
+}
+
+void TimeIntegrator::stepTo(model::State& s, double t_end,
+                            const std::function<void(const model::State&)>& on_step) {
+  setTargets(s, t_end);
   try {
-    advance(s, dt, 0, on_step);
+    advance(s, t_end - s.time, 0, on_step);
+  } catch (...) {
+    targets_.clear();
+    throw;
+  }
+  targets_.clear();
+}
+
+void TimeIntegrator::advanceTo(model::State& s, double t_end,
+                               const std::function<void(const model::State&)>& on_step) {
+  if (!o_.adaptive) {
+    stepTo(s, t_end, on_step);
+    return;
+  }
+  setTargets(s, t_end);
+  try {
+    adaptiveSteps(s, t_end, on_step);
   } catch (...) {
     targets_.clear();
     throw;
@@ -356,13 +445,14 @@ model::MotionRecord TimeIntegrator::record(const model::State& s) const {
 }
 
 IntegratorCheckpoint TimeIntegrator::save(const model::State& s) const {
-  return {s, steps_since_update_, force_scale_};
+  return {s, steps_since_update_, force_scale_, h_};
 }
 
 void TimeIntegrator::restore(const IntegratorCheckpoint& checkpoint, model::State& s) {
   s = checkpoint.state;
   steps_since_update_ = checkpoint.steps_since_update;
   force_scale_ = checkpoint.force_scale;
+  h_ = checkpoint.next_step;
   factor_h_ = -1.0;  // the factorisation belongs to a later state: the next step makes its own
   kept_.valid = false;
   targets_.clear();

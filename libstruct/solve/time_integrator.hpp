@@ -20,7 +20,8 @@ namespace flexmoor::solve {
 struct DynamicReport {
   int steps = 0;       // accepted steps, cut sub-steps included
   int iterations = 0;  // Newton iterations over all steps
-  int cuts = 0;        // how often a step was halved
+  int cuts = 0;        // how often a step was halved (adaptive steps: Newton failed)
+  int rejections = 0;  // adaptive steps taken again, shorter, for their local error
   int backtracks = 0;  // Newton increments halved because they raised the residual
   int tangent_updates = 0;
   int load_matrix_updates = 0;  // evaluations of the motion-dependent loads' matrices
@@ -32,6 +33,7 @@ struct IntegratorCheckpoint {
   model::State state;
   int steps_since_update = 0;
   double force_scale = 0.0;
+  double next_step = 0.0;  // adaptive steps: the step to try next
 };
 
 class TimeIntegrator {
@@ -53,6 +55,11 @@ class TimeIntegrator {
   void stepTo(model::State& s, double t_end,
               const std::function<void(const model::State&)>& on_step = {});
 
+  // To the time t_end in steps of the schedule's choosing: with options.adaptive, as many
+  // error-controlled steps as it takes, the last landing on t_end exactly; else stepTo.
+  void advanceTo(model::State& s, double t_end,
+                 const std::function<void(const model::State&)>& on_step = {});
+
   // Drives a constrained dof over the next step(): its displacement and velocity at the step's
   // end (interpolated linearly in time over cut sub-steps; the acceleration is the velocity's
   // change over the sub-step). Afterwards the dof follows its model history again unless driven
@@ -69,6 +76,12 @@ class TimeIntegrator {
     double start_u, start_v, end_u, end_v, start_time, duration;
   };
   bool attempt(model::State& s, double h, IterationRecord& rec);
+  // The local error of the step just accepted, of size h, against its tolerance (AdaptiveSteps).
+  double localError(double h) const;
+  void adaptiveSteps(model::State& s, double t_end,
+                     const std::function<void(const model::State&)>& on_step);
+  [[noreturn]] void fail(const model::State& s, double h, const IterationRecord& rec) const;
+  void setTargets(const model::State& s, double t_end);
   void advance(model::State& s, double h, int depth,
                const std::function<void(const model::State&)>& on_step);
   void applySupports(model::State& next, const model::State& previous, double h) const;
@@ -101,6 +114,7 @@ class TimeIntegrator {
   double factor_h_ = -1.0;
   double end_time_ = 0.0;  // where the step under way ends
   int steps_since_update_ = 0;
+  double h_ = 0.0;            // adaptive steps: the next step to try
   double force_scale_ = 0.0;  // largest force norm of the accepted steps
   double floor_ = 0.0;        // round-off floor of the residual at the last tangent
   NewtonTrace trace_;         // of the last step tried

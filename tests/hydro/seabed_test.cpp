@@ -44,7 +44,7 @@ TEST(SeabedContact, LineExactlyOnTheBedHasTheContactStiffness) {
 TEST(SeabedContact, SlidingLineIsResistedByMuTimesTheContactForce) {
   SeabedProperties bed;
   bed.friction = 0.6;
-  const double d = 0.1, delta = 2e-3, N = bed.stiffness * delta * d, U = 1.0;
+  const double d = 0.1, delta = 2e-2, N = bed.stiffness * delta * d, U = 1.0;  // past the ramp
   const Vector3d sliding(U, 0.0, 0.0);
   const SeabedPointLoad f = seabedLoad(bed, delta, Vector3d::UnitZ(), d, sliding);
   const double ratio = bed.slip_speed / U;

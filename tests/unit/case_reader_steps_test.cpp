@@ -99,6 +99,33 @@ TEST(CaseReaderSteps, ModesAndDynamicOptions) {
   EXPECT_EQ(c.summary[0].unit, "rad/s");
 }
 
+// A dynamic step's time: duration alone is adaptive (records every output, default a thousandth
+// of the duration; dt_max a tenth of the shortest forcing period unless given), dt with duration
+// fixed steps, and output a whole number of them.
+TEST(CaseReaderSteps, DynamicTimeIsAdaptiveOrFixed) {
+  const Case c = readCase(writeCase("time.yaml", cableCase(R"(  - dynamic: {duration: 2 s}
+  - dynamic: {duration: 600 s, output: 0.1 s, step_tolerance: 1e-3, dt_max: 0.5 s, dt_min: 1e-4 s}
+  - dynamic: {dt: 0.05 s, duration: 3 s, output: 0.25 s}
+)")));
+  ASSERT_EQ(c.steps.size(), 3u);
+  ASSERT_TRUE(c.steps[0].adaptive());
+  const solve::AdaptiveSteps& a = *c.steps[0].dynamic.adaptive;
+  EXPECT_DOUBLE_EQ(a.duration, 2.0);
+  EXPECT_DOUBLE_EQ(a.tolerance, 0.01);
+  EXPECT_DOUBLE_EQ(c.steps[0].output_interval, 2e-3);
+  EXPECT_DOUBLE_EQ(c.steps[0].duration(), 2.0);
+  EXPECT_EQ(c.steps[0].streamedRecords(), 1000);
+  const solve::AdaptiveSteps& b = *c.steps[1].dynamic.adaptive;
+  EXPECT_DOUBLE_EQ(b.tolerance, 1e-3);
+  EXPECT_DOUBLE_EQ(b.dt_max, 0.5);
+  EXPECT_DOUBLE_EQ(b.dt_min, 1e-4);
+  EXPECT_DOUBLE_EQ(c.steps[1].output_interval, 0.1);
+  EXPECT_FALSE(c.steps[2].adaptive());
+  ASSERT_EQ(c.steps[2].dynamic.schedule.size(), 1u);
+  EXPECT_EQ(c.steps[2].dynamic.schedule[0].steps, 60);
+  EXPECT_EQ(c.steps[2].output_every, 5);
+}
+
 TEST(CaseReaderSteps, StepMistakesAreReportedWithTheirLines) {
   const std::vector<std::string> m = problems(
       writeCase("bad-steps.yaml", cableCase(R"(  - static: {psi: 0.5}
@@ -119,7 +146,8 @@ TEST(CaseReaderSteps, StepMistakesAreReportedWithTheirLines) {
                           "bad-steps.yaml:13: steps[1].static.psi: only used with control: "
                           "arc_length (got no control: key)"))
       << joined(m);
-  EXPECT_TRUE(anyContains(m, "bad-steps.yaml:15: steps[3].dynamic.schedule: given with dt/steps"))
+  EXPECT_TRUE(anyContains(
+      m, "bad-steps.yaml:15: steps[3].dynamic.schedule: given with dt (expected either"))
       << joined(m);
   EXPECT_TRUE(anyContains(m,
                           "bad-steps.yaml:16: steps[4].dynamic.gamma: out of range (got 0.4, "
@@ -134,7 +162,7 @@ TEST(CaseReaderSteps, StepMistakesAreReportedWithTheirLines) {
                           "steps[5].dynamic.newton: unknown value (got 'bfgs', expected one "
                           "of: full, modified, self_corrective)"))
       << joined(m);
-  EXPECT_TRUE(anyContains(m, "bad-steps.yaml:18: steps[6].dynamic: missing key 'schedule'"))
+  EXPECT_TRUE(anyContains(m, "bad-steps.yaml:18: steps[6].dynamic: missing key 'duration'"))
       << joined(m);
   EXPECT_TRUE(anyContains(m, "bad-steps.yaml:20: steps[8]: not a step (got 'vibrate'"))
       << joined(m);
