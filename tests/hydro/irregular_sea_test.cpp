@@ -2,8 +2,9 @@
 // (equal spacing on an FFT grid, random frequencies in equal bins, equal-energy bins), a long
 // record's Welch spectrum (FFTW; Hann window, half overlap) gives back the target's Hs within 5%
 // and Tp within 3% (the required bounds; each case held to just above what it measures); a seed
-// gives the same elevation to the last bit, another seed another sea; the equal grid repeats with its stated period and its FFT record is the sum of
-// cosines; equal-energy bins each hold m0 / N; spreading keeps the energy.
+// gives the same elevation to the last bit, another seed another sea; the equal grid repeats
+// with its stated period and its FFT record is the sum of cosines; equal-energy bins each hold
+// m0 / N; spreading keeps the energy.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -46,7 +46,7 @@ TEST(WaveSpectrum, JonswapIsNormalisedAndPeaksAtTp) {
 // JONSWAP's two peak widths, sigma = 0.07 at and below the peak and 0.09 above it (DNV-RP-C205),
 // by hand at f = 0.9 fp and 1.1 fp (the same ratios in omega). Relative to the peak the
 // normalising factor cancels:
-//   S(r fp) / S(fp) = r^-5 exp(-5/4 (r^-4 - 1)) gamma^(G(r) - 1),  G = exp(-(r - 1)^2 / (2 sigma^2))
+//   S(r fp) / S(fp) = r^-5 exp(-5/4 (r^-4 - 1)) gamma^(G(r) - 1), G = exp(-(r - 1)^2 / (2 sigma^2))
 //   r = 0.9, sigma 0.07: 1.693508780843 x 0.519339546036 x 3.3^(0.360447788598 - 1)
 //                      = 1.693508780843 x 0.519339546036 x 0.465997152703 = 0.409847329741
 //   r = 1.1, sigma 0.09: 0.620921323059 x 1.486215834137 x 3.3^(0.539407507238 - 1)
