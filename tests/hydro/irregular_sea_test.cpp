@@ -1,9 +1,10 @@
 // Irregular seas from a spectrum (libhydro/waves/wave_synthesis.hpp): for each discretisation
 // (equal spacing on an FFT grid, random frequencies in equal bins, equal-energy bins), a long
 // record's Welch spectrum (FFTW; Hann window, half overlap) gives back the target's Hs within 5%
-// and Tp within 3% (the required bounds); a seed gives the same elevation to the last bit, another
-// seed another sea; the equal grid repeats with its stated period and its FFT record is the sum of
-// cosines; equal-energy bins each hold m0 / N; spreading keeps the energy.
+// and Tp within 3% (the required bounds; each case held to just above what it measures); a seed
+// gives the same elevation to the last bit, another seed another sea; the equal grid repeats
+// with its stated period and its FFT record is the sum of cosines; equal-energy bins each hold
+// m0 / N; spreading keeps the energy.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,7 +69,8 @@ HsTp welchHsTp(const std::vector<double>& eta, double dt, const WaveSpectrum& ta
 struct Case {
   const char* name;
   Discretisation discretisation;
-  double gamma;  // 1: Pierson-Moskowitz
+  double gamma;                       // 1: Pierson-Moskowitz
+  double hs_tolerance, tp_tolerance;  // relative
 };
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
@@ -76,8 +78,12 @@ class SpectrumRecord : public ::testing::TestWithParam<Case> {};
 
 // A 3 h sea state (Hs 6 m, Tp 10 s) at dt = 0.5 s: 21,600 samples, 9 Welch segments of 2,048 s.
 // The equal grid's repeat period is the record's 3 h (3,781 components in [0.5, 4] wp), its
-// record one inverse FFT; the others 300 components, their record summed. Hs within 5% and Tp
-// within 3% of the target; the band [0.5, 4] wp holds 99.9% of m0 (Hs -0.05%).
+// record one inverse FFT; the others 300 components, their record summed. Required: Hs within 5%
+// and Tp within 3% of the target; each case held to just above what it measures (the seed fixes
+// the record): Hs -1.51 / -0.70 / +0.61% (JONSWAP equal / random bins / equal energy), -0.88 /
+// -0.12 / -0.62% (Pierson-Moskowitz); Tp +0.02 / +0.10 / +0.52%, +0.05 / +0.05 / +0.26%. The band
+// [0.5, 4] wp leaves out 0.32% of JONSWAP's m0 and 0.49% of Pierson-Moskowitz's (Hs -0.16%,
+// -0.24%).
 TEST_P(SpectrumRecord, WelchEstimateGivesBackHsAndTp) {
   const Case c = GetParam();
   const double hs = 6.0, tp = 10.0, dt = 0.5, duration = 10800.0;
@@ -101,20 +107,21 @@ TEST_P(SpectrumRecord, WelchEstimateGivesBackHsAndTp) {
     eta = record(seaOf(sea.components), dt, n);
   }
   const HsTp e = welchHsTp(eta, dt, s);
-  EXPECT_NEAR(e.hs / hs, 1.0, 0.05) << c.name << ": Hs " << e.hs;
-  EXPECT_NEAR(e.tp / tp, 1.0, 0.03) << c.name << ": Tp " << e.tp;
+  EXPECT_NEAR(e.hs / hs, 1.0, c.hs_tolerance) << c.name << ": Hs " << e.hs;
+  EXPECT_NEAR(e.tp / tp, 1.0, c.tp_tolerance) << c.name << ": Tp " << e.tp;
   std::printf("%s: Welch Hs %.4f m (%+.2f%%), Tp %.3f s (%+.2f%%)\n", c.name, e.hs,
               100.0 * (e.hs / hs - 1.0), e.tp, 100.0 * (e.tp / tp - 1.0));
 }
 
 INSTANTIATE_TEST_SUITE_P(
     IrregularSea, SpectrumRecord,
-    ::testing::Values(Case{"JonswapEqual", Discretisation::Equal, 3.3},
-                      Case{"JonswapRandomBins", Discretisation::RandomBins, 3.3},
-                      Case{"JonswapEqualEnergy", Discretisation::EqualEnergy, 3.3},
-                      Case{"PiersonMoskowitzEqual", Discretisation::Equal, 1.0},
-                      Case{"PiersonMoskowitzRandomBins", Discretisation::RandomBins, 1.0},
-                      Case{"PiersonMoskowitzEqualEnergy", Discretisation::EqualEnergy, 1.0}),
+    ::testing::Values(
+        Case{"JonswapEqual", Discretisation::Equal, 3.3, 0.025, 0.0005},
+        Case{"JonswapRandomBins", Discretisation::RandomBins, 3.3, 0.012, 0.002},
+        Case{"JonswapEqualEnergy", Discretisation::EqualEnergy, 3.3, 0.01, 0.008},
+        Case{"PiersonMoskowitzEqual", Discretisation::Equal, 1.0, 0.015, 0.001},
+        Case{"PiersonMoskowitzRandomBins", Discretisation::RandomBins, 1.0, 0.0025, 0.001},
+        Case{"PiersonMoskowitzEqualEnergy", Discretisation::EqualEnergy, 1.0, 0.01, 0.004}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // Every discretisation, long- and short-crested: two syntheses of one seed give Seas whose

@@ -2,7 +2,8 @@
 // unstretched length): statically, under gravity and the water's buoyancy (MorisonLineLoad), it
 // delivers its submerged weight w = (rho_s - rho_w) g A per length to the bed at the penetration
 // w / (k_b d); dragged along the bed at U well above the slip speed v_s it is resisted by
-// mu w L U / sqrt(U^2 + v_s^2), within (v_s / U)^2 / 2 of mu w L.
+// mu w L U / sqrt(U^2 + v_s^2), within (v_s / U)^2 / 2 of mu w L; stretched, it is pushed out per
+// unstretched length.
 // A steel rod (d = 0.1 m, 7850 kg/m^3) 20 m long, five 3-node elements at 30 m depth; x and y
 // held, z free; solved by Newton (solveStatic, increment below 1e-12 relative) from 1 mm inside the
 // bed. The bed force is the seabed load alone integrated over the elements at the solution.
@@ -113,6 +114,30 @@ TEST(LineOnSeabed, DraggedLineIsResistedByMuTimesItsSubmergedWeight) {
   EXPECT_NEAR(-bed.x() / smooth, 1.0, 1e-6);                                 // the smooth law
   EXPECT_NEAR(-bed.x() / (mu * wL), 1.0, 0.5 * v_s * v_s / (U * U) * 1.01);  // its limit
   EXPECT_NEAR(bed.z() / wL, 1.0, 1e-10);  // a horizontal velocity leaves the contact force alone
+}
+
+// Per unstretched length (MoorDyn v2's convention): the rod stretched 1% along x and pushed 2 mm
+// into the bed at every node (more than the 1 mm over which the damping comes in; at rest) is
+// pushed out by k_b delta d per unstretched length, k_b delta d L0 in all (the integrand is
+// constant: Gauss integration exact), not by k_b delta d times the stretched length 1.01 L0.
+// Tolerance 1.2e-13 relative (measured -6.1e-14: the penetration is the difference of two heights
+// 30 m down); per deformed length it would be +1%.
+TEST(LineOnSeabed, StretchedLineIsPushedOutPerUnstretchedLength) {
+  const RodOnTheBed rod = rodOnTheBed(0.0);
+  const model::Model& m = *rod.line.model;
+  const double strain = 0.01, delta = 2e-3;
+  model::State s = m.initialState();
+  for (int n : rod.line.nodes) {
+    s.displacement(0, n) = strain * m.reference()(0, n);
+    s.displacement(2, n) = -delta;
+  }
+  s.load_factor = 1.0;
+  const double expected = hydro::SeabedProperties().stiffness * delta * rod.width * kLength;
+  const Vector3d bed = bedForce(m, s);
+  std::cout << "stretched rod: bed force / (k_b delta d L0) - 1 = " << bed.z() / expected - 1.0
+            << '\n';
+  EXPECT_NEAR(bed.z() / expected, 1.0, 1.2e-13);
+  EXPECT_LT(std::abs(bed.x()) + std::abs(bed.y()), 1.2e-13 * expected);
 }
 
 }  // namespace

@@ -31,7 +31,9 @@ TEST(MooringCatenary, Oc3LineMatchesMapPlusPlus) {
 // OC4: spans 796.732 m and 186 m from the stated anchor and fairlead points, L = 835.35 m,
 // w = (113.35 - 1025 pi 0.0766^2 / 4) 9.80665 N/m, EA = 7.536e8 N. docs/theory.md quotes "about
 // 908 kN horizontal, 631 kN vertical per line" from an independent elastic-catenary solve; the
-// reference reproduces those to their three digits (0.5%).
+// reference gives 907.49 kN and 631.10 kN: H within 1e-3 (measured -5.6e-4, a little more than
+// the quoted figure's last digit: 907.49 kN would be quoted 907) and V within 3e-4 (measured
+// +1.7e-4).
 TEST(MooringCatenary, Oc4LineMatchesTheQuotedIndependentSolve) {
   const double pi = std::acos(-1.0);
   MooringLineInputs in;
@@ -42,8 +44,8 @@ TEST(MooringCatenary, Oc4LineMatchesTheQuotedIndependentSolve) {
   in.axial_stiffness = 7.536e8;
   EXPECT_NEAR(in.horizontal_span, 796.732, 1e-3);
   const MooringLineSolution s = solveMooringLine(in);
-  EXPECT_NEAR(s.horizontal_force / 908e3, 1.0, 5e-3);
-  EXPECT_NEAR(s.fairlead_vertical / 631e3, 1.0, 5e-3);
+  EXPECT_NEAR(s.horizontal_force / 908e3, 1.0, 1e-3);
+  EXPECT_NEAR(s.fairlead_vertical / 631e3, 1.0, 3e-4);
 }
 
 }  // namespace
