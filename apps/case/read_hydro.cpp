@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/physical_range.hpp"
 #include "apps/case/read_fields.hpp"
 #include "apps/case/read_sea.hpp"
 #include "libhydro/waves/dispersion.hpp"
@@ -36,13 +37,15 @@ std::optional<double> waterGravity(CaseBuilder& b, int line) {
   return std::nullopt;
 }
 
-// water: {density, depth}; false when it has errors.
+// water: {density, depth}, the density within kWaterDensityRange; false when it has errors.
 bool readWater(CaseBuilder& b, const YAML::Node& n, int line, HydroSpec& h) {
   Fields f(b.diag, n, "water", {"density", "depth"});
   const auto density = requiredQuantity(b, f, "density", kind::kDensity, Limit::Positive);
   const auto depth = requiredQuantity(b, f, "depth", kind::kLength, Limit::Positive);
   const auto g = waterGravity(b, line);
   if (!density || !depth || !g) return false;
+  if (!inPhysicalRange(b.in, *f.find("density"), f.path("density"), *density, kWaterDensityRange))
+    return false;
   h.water = {*density, *depth, *g};
   h.bed = hydro::Bathymetry::flat(*depth);
   return true;
