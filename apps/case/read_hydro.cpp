@@ -6,6 +6,7 @@
 #include "apps/case/physical_range.hpp"
 #include "apps/case/read_fields.hpp"
 #include "apps/case/read_sea.hpp"
+#include "apps/case/read_seabed_friction.hpp"
 #include "libhydro/waves/dispersion.hpp"
 #include "libstruct/element/spring_element.hpp"
 
@@ -216,7 +217,8 @@ std::optional<hydro::Bathymetry> readGrid(CaseBuilder& b, const YAML::Node& n,
                                  static_cast<int>(rows.size()), std::move(heights));
 }
 
-// seabed: {[stiffness], [damping], [friction: 0], [slip_speed], [slope: [sx, sy]] | [grid]};
+// seabed: {[stiffness], [damping], [friction: 0], [slip_speed], [slope: [sx, sy]] | [grid]}
+// (friction: a number, or a map naming its law: read_seabed_friction.hpp);
 // the defaults are MoorDyn's (seabed_contact.hpp), the bed flat at -depth unless a slope (through
 // z = -depth at x = y = 0) or a grid says otherwise.
 void readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
@@ -227,10 +229,8 @@ void readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
                                   fromSi(b, si.stiffness, kind::kBedStiffness));
   const auto c = optionalQuantity(b, f, "damping", kind::kBedDamping, Limit::NonNegative,
                                   fromSi(b, si.damping, kind::kBedDamping));
-  const auto mu =
-      optionalQuantity(b, f, "friction", kind::kNumber, Limit::NonNegative, si.friction);
-  const auto slip = optionalQuantity(b, f, "slip_speed", kind::kVelocity, Limit::Positive,
-                                     fromSi(b, si.slip_speed, kind::kVelocity));
+  hydro::SeabedProperties contact;
+  const bool friction_ok = readSeabedFriction(b, f, contact);
   const YAML::Node* slope = f.find("slope");
   const YAML::Node* grid = f.find("grid");
   if (slope && grid) {
@@ -253,8 +253,10 @@ void readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
     if (!bed) return;
     h.bed = *bed;
   }
-  if (!k || !c || !mu || !slip) return;
-  h.contact = {*k, *c, *mu, *slip};
+  if (!k || !c || !friction_ok) return;
+  contact.stiffness = *k;
+  contact.damping = *c;
+  h.contact = contact;
   h.has_contact = true;
 }
 
