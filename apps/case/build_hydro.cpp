@@ -113,10 +113,20 @@ void buildOcean(CaseBuilder& b) {
   for (const WavePressureSpec& w : h.wave_pressures)
     b.model.addSurfaceLoad(std::make_shared<hydro::IncidentPressureLoad>(sea, w.side), w.elements);
   if (!h.has_contact) return;
-  std::vector<double> widths(hydro.size(), 0.0);
-  for (size_t e = 0; e < hydro.size(); ++e)
-    if (hydro[e]) widths[e] = hydro[e]->coefficients.diameter;
-  b.model.addLineLoad(std::make_shared<hydro::SeabedLineLoad>(h.bed, h.contact, std::move(widths)));
+  // Each line element's width and node spacing (MoorDyn's segment length, over which the moordyn
+  // friction law spreads a node's friction damping).
+  std::vector<double> widths(hydro.size(), 0.0), node_lengths(hydro.size(), 1.0);
+  for (size_t e = 0; e < hydro.size(); ++e) {
+    if (!hydro[e]) continue;
+    widths[e] = hydro[e]->coefficients.diameter;
+    const std::vector<int>& nodes = b.model.element(static_cast<int>(e)).nodes();
+    double length = 0.0;
+    for (size_t i = 1; i < nodes.size(); ++i)
+      length += (b.model.reference().col(nodes[i]) - b.model.reference().col(nodes[i - 1])).norm();
+    node_lengths[e] = length / static_cast<double>(nodes.size() - 1);
+  }
+  b.model.addLineLoad(std::make_shared<hydro::SeabedLineLoad>(h.bed, h.contact, std::move(widths),
+                                                              std::move(node_lengths)));
   // Bodies touch the bed with their projected area from their lowest point: a sphere's disc
   // pi D^2 / 4 from its radius below the node; a point body as a cube of its volume, V^(2/3)
   // from half its side (a body without volume does not touch).

@@ -5,8 +5,10 @@
 // the lower end is the anchor. Between them the line takes the elastic catenary
 // (libhydro/mooring/catenary_line.hpp) in their vertical plane: submerged weight w = g (rho A -
 // rho_w pi d^2 / 4) per unstretched length (the buoyancy where its section has hydro: in water),
-// EA from the material's initial modulus, seabed contact when the case has `seabed:` and the
-// anchor lies on the bed (the bed's height under the anchor taken as flat). A node at reference
+// EA from the material's initial modulus, seabed contact when the case has `seabed:` and every
+// part's section touches it (has hydro:), the bed's height under the anchor taken as flat: from
+// an anchor on the bed the line may lie on it up to its touchdown; from a raised anchor it may lie
+// on it between the parts hanging from either end, or hang clear. A node at reference
 // arc length s from the anchor goes to the catenary's point at s. The segments of a multi-segment
 // line (segment_of:) start on the line's one catenary, each segment with its own section's weight
 // and EA, and at each connection node the net upward force of what is attached there: the
@@ -66,8 +68,12 @@ void startOnCatenary(CaseBuilder& b, const std::vector<const InitialShapeSpec*>&
   const Eigen::Vector3d anchor = startPosition(m, start_is_anchor ? first : last);
   const Eigen::Vector3d fairlead = startPosition(m, start_is_anchor ? last : first);
   const double tolerance = positionTolerance(b);
-  bool on_bed = false;
-  if (h.has_contact) {
+  // Seabed contact acts on lines of sections with hydro: only (their projected width).
+  const bool touches = h.has_contact && std::all_of(parts.begin(), parts.end(), [](const auto* p) {
+                         return p->section->hydro.has_value();
+                       });
+  double anchor_height = 0.0;
+  if (touches) {
     const double bed_at_fairlead = h.bed.height(fairlead.x(), fairlead.y());
     const double bed_at_anchor = h.bed.height(anchor.x(), anchor.y());
     if (fairlead.z() < bed_at_fairlead - tolerance) {
@@ -80,13 +86,14 @@ void startOnCatenary(CaseBuilder& b, const std::vector<const InitialShapeSpec*>&
            ", expected at or above the bed's " + formatNumber(bed_at_anchor) + ")");
       return;
     }
-    on_bed = anchor.z() <= bed_at_anchor + tolerance;
+    anchor_height = anchor.z() <= bed_at_anchor + tolerance ? 0.0 : anchor.z() - bed_at_anchor;
   }
   const Eigen::Vector3d span = fairlead - anchor;
   hydro::CatenaryLineInputs in;
   in.horizontal_span = span.head<2>().norm();
   in.vertical_span = span.z();
-  in.seabed = on_bed;
+  in.seabed = touches;
+  in.anchor_height = anchor_height;
   in.friction = spec.friction;
   in.max_strain = spec.max_strain;
   // Each part's segment, from the start; the arc length where each part starts.

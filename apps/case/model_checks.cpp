@@ -2,10 +2,13 @@
 // run fail obscurely or give a wrong number, refused with the line of the element, node or step.
 //   geometry   every element's Jacobian positive at its integration points
 //              (Element::minRelativeJacobian)
-//   mechanisms a free dof that no element holds; a group of nodes joined by elements that no
-//              support holds in x, y or z (a rigid translation). Only these topological
-//              mechanisms: a taut net supported at its ends has a singular initial stiffness
-//              too (its cables start slack), which viscous relaxation is there for.
+//   mechanisms a free dof that no element holds; a group of nodes joined by elements that
+//              nothing holds in x, y or z in a relax, static or modes step (a rigid translation:
+//              no support, the supports released, no seabed or surface to hold it vertically;
+//              rigid_translations.hpp), a warning when only dynamic steps see it free. Only
+//              these topological mechanisms: a taut net supported at its ends has a singular
+//              initial stiffness too (its cables start slack), which viscous relaxation is
+//              there for.
 //   coincident two nodes at one point that no element joins: part of the error when they leave
 //              a mechanism, else a warning (the model runs, but perhaps not as meant).
 //   steps      modes and dynamic steps need a mass on every free dof; no more modes than free
@@ -18,6 +21,7 @@
 
 #include "apps/case/case_builder.hpp"
 #include "apps/case/node_index.hpp"
+#include "apps/case/rigid_translations.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -43,6 +47,8 @@ std::string elementName(const CaseBuilder& b, int e) {
   return "element " + std::to_string(e + 1) + " (" + b.model.element(e).typeName() + " of " +
          b.element_origin[e].where + ")";
 }
+
+std::string stepName(const StepSpec& step) { return "step '" + step.name + "'"; }
 
 bool isLine(const element::Element& e) {
   return e.typeName().rfind("cable", 0) == 0 || e.typeName().rfind("axisymmetric", 0) == 0;
@@ -127,6 +133,35 @@ std::string namesOf(CaseBuilder& b, Components& parts, int root) {
   return names;
 }
 
+// How the messages name a group of joined nodes, and the line of the file that defines it: its
+// first named line (in the file's order), else its surface, else its smallest node.
+struct GroupName {
+  std::string text;
+  int line;
+  std::string is;  // "is" or "are"
+};
+
+GroupName groupName(CaseBuilder& b, Components& parts, int root, int size) {
+  const std::string names = namesOf(b, parts, root);
+  const std::string nodes = std::to_string(size) + " nodes";
+  if (names.empty())
+    return {nodeName(b, root) + " and the " +
+                (size == 2 ? std::string("node") : std::to_string(size - 1) + " nodes") +
+                " joined to it by elements",
+            b.node_line[root], "are"};
+  int line = b.node_line[root];
+  for (const std::string& name : b.line_order) {
+    const auto nodes_of = b.c.lines.find(name);
+    if (nodes_of != b.c.lines.end() && !nodes_of->second.empty() &&
+        parts.root(nodes_of->second.front()) == root) {
+      line = b.node_line[nodes_of->second.front()];
+      break;
+    }
+  }
+  const bool one = names.find(", ") == std::string::npos;
+  return {(one ? names : "the group of " + names) + " (" + nodes + ")", line, "is"};
+}
+
 void checkMechanisms(CaseBuilder& b) {
   const int count = b.model.nodeCount();
   std::vector<std::vector<int>> adjacent(count);  // elements at each node
@@ -157,19 +192,10 @@ void checkMechanisms(CaseBuilder& b) {
                                         ")");
   }
 
-  // Directions each group is held in: by a support on any of its nodes, or, radially (x), by
-  // the hoop stiffness of an axisymmetric membrane or a hoop cable.
-  std::vector<int> fixed(count, 0), size(count, 0);
-  for (int node = 0; node < count; ++node) {
-    if (!held[node]) continue;
-    const int r = parts.root(node);
-    ++size[r];
-    for (int k = 0; k < 3; ++k)
-      if (b.model.isConstrained(node, k)) fixed[r] |= 1 << k;
-  }
-  for (const auto& element : b.model.elements())
-    if (element->typeName().rfind("axisymmetric", 0) == 0 || element->typeName() == "hoop_cable")
-      fixed[parts.root(element->nodes().front())] |= 1;
+  // Rigid translations nothing holds (rigid_translations.hpp), named by the group's lines.
+  std::vector<int> root(count, -1), size(count, 0);
+  for (int node = 0; node < count; ++node)
+    if (held[node]) ++size[root[node] = parts.root(node)];
   // A node of a group at the point of a node outside it hints at the cause.
   std::vector<int> astray(count, -1);
   for (int node = 0; node < count; ++node) {
@@ -178,21 +204,35 @@ void checkMechanisms(CaseBuilder& b) {
         astray[parts.root(node)] < 0)
       astray[parts.root(node)] = node;
   }
-  for (int r = 0; r < count; ++r) {
-    if (!held[r] || parts.root(r) != r || fixed[r] == 7) continue;
+  for (const UnrestrainedGroup& g : unrestrainedGroups(b, root)) {
+    const int r = g.root;
     std::string free;
     for (int k = 0; k < 3; ++k)
-      if (!(fixed[r] & (1 << k))) free += (free.empty() ? "" : " and ") + std::string(kAxis[k]);
+      if (g.free & (1 << k)) free += (free.empty() ? "" : ", ") + std::string(kAxis[k]);
     const std::string hint = astray[r] >= 0 ? twinHint(b, astray[r], twin[astray[r]]) : "";
-    const std::string names = namesOf(b, parts, r);
-    const std::string others =
-        size[r] == 2 ? "the node" : "the " + std::to_string(size[r] - 1) + " nodes";
-    b.diag.error(b.node_line[r],
-                 nodeName(b, r) + " and " + others + " joined to it by elements" +
-                     (names.empty() ? "" : " (" + names + ")") + " are free to move in " + free +
-                     " as a rigid body: no support fixes " + free + " on any of them (got " +
-                     std::to_string(size[r]) + " nodes free in " + free +
-                     ", expected a support fixing " + free + " on one of them" + hint + ")");
+    const GroupName name = groupName(b, parts, r, size[r]);
+    std::string got = "no support fixing " + free + " on any of its nodes";
+    if (g.step >= 0 && g.released) {
+      const StepSpec& step = b.c.steps[g.step];
+      got += " from " + stepName(step) + " (line " + std::to_string(step.where.line) +
+             ") on, whose release: lets the last of them go";
+    }
+    got += ", nor a spring or element joining it to one";
+    if (!g.held_other.empty()) got += "; " + g.held_other;
+    if (g.step < 0) {
+      b.diag.warning(name.line, name.text + " " + name.is + " free to move in " + free +
+                                    " as a rigid body in the dynamic steps, where only its "
+                                    "inertia resists it (got " +
+                                    got +
+                                    "; expected, unless it is meant to drift or sink, an "
+                                    "anchor, a fairlead or another support fixing " +
+                                    free + " on one of its nodes" + hint + ")");
+      continue;
+    }
+    b.diag.error(name.line, name.text + " " + name.is + " free to move in " + free +
+                                " as a rigid body: nothing holds it there (got " + got +
+                                "; expected an anchor, a fairlead or another support fixing " +
+                                free + " on one of its nodes" + hint + ")");
   }
 
   // Coincident nodes that leave no mechanism: the model runs, but they were perhaps meant as one.
@@ -230,8 +270,6 @@ std::vector<double> dofMass(const CaseBuilder& b, std::set<std::string>& massles
   }
   return mass;
 }
-
-std::string stepName(const StepSpec& step) { return "step '" + step.name + "'"; }
 
 void checkMass(CaseBuilder& b, const StepSpec& step, const std::vector<double>& mass,
                const std::set<std::string>& massless_sections) {

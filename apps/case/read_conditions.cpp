@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/physical_range.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -153,18 +154,23 @@ void readWavePressure(CaseBuilder& b, const YAML::Node& item, const std::string&
   b.hydro.wave_pressures.push_back({*elements, *side, lineOf(item), path});
 }
 
-// gravity: [gx, gy, gz], or {g: G} for (0, 0, -G).
+// gravity: [gx, gy, gz], or {g: G} for (0, 0, -G); its magnitude within kGravityRange.
 void readGravity(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
   if (n.IsMap()) {
     Fields f(b.diag, n, path, {"g"});
     const YAML::Node* g = f.require("g");
-    const auto value =
+    auto value =
         g ? b.in.quantity(*g, f.path("g"), kind::kAcceleration, Limit::NonNegative) : std::nullopt;
+    if (value && !inPhysicalRange(b.in, *g, f.path("g"), *value, kGravityRange)) value.reset();
     if (value) b.model.setGravity(Eigen::Vector3d(0.0, 0.0, -*value));
     b.gravity_given = value.has_value();
     return;
   }
-  const auto g = b.in.vector3(n, path, kind::kAcceleration);
+  auto g = b.in.vector3(n, path, kind::kAcceleration);
+  if (g && !inPhysicalRange(b.in, n, path, g->norm(), kGravityRange,
+                            "a magnitude of " + formatNumber(g->norm()) + " " +
+                                unitNames(b.in.units).length + "/s^2"))
+    g.reset();
   if (g) b.model.setGravity(*g);
   b.gravity_given = g.has_value();
 }

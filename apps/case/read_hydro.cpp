@@ -3,8 +3,10 @@
 #include <cmath>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/physical_range.hpp"
 #include "apps/case/read_fields.hpp"
 #include "apps/case/read_sea.hpp"
+#include "apps/case/read_seabed_friction.hpp"
 #include "libhydro/waves/dispersion.hpp"
 #include "libstruct/element/spring_element.hpp"
 
@@ -36,13 +38,15 @@ std::optional<double> waterGravity(CaseBuilder& b, int line) {
   return std::nullopt;
 }
 
-// water: {density, depth}; false when it has errors.
+// water: {density, depth}, the density within kWaterDensityRange; false when it has errors.
 bool readWater(CaseBuilder& b, const YAML::Node& n, int line, HydroSpec& h) {
   Fields f(b.diag, n, "water", {"density", "depth"});
   const auto density = requiredQuantity(b, f, "density", kind::kDensity, Limit::Positive);
   const auto depth = requiredQuantity(b, f, "depth", kind::kLength, Limit::Positive);
   const auto g = waterGravity(b, line);
   if (!density || !depth || !g) return false;
+  if (!inPhysicalRange(b.in, *f.find("density"), f.path("density"), *density, kWaterDensityRange))
+    return false;
   h.water = {*density, *depth, *g};
   h.bed = hydro::Bathymetry::flat(*depth);
   return true;
@@ -213,7 +217,8 @@ std::optional<hydro::Bathymetry> readGrid(CaseBuilder& b, const YAML::Node& n,
                                  static_cast<int>(rows.size()), std::move(heights));
 }
 
-// seabed: {[stiffness], [damping], [friction: 0], [slip_speed], [slope: [sx, sy]] | [grid]};
+// seabed: {[stiffness], [damping], [friction: 0], [slip_speed], [slope: [sx, sy]] | [grid]}
+// (friction: a number, or a map naming its law: read_seabed_friction.hpp);
 // the defaults are MoorDyn's (seabed_contact.hpp), the bed flat at -depth unless a slope (through
 // z = -depth at x = y = 0) or a grid says otherwise.
 void readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
@@ -224,10 +229,8 @@ void readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
                                   fromSi(b, si.stiffness, kind::kBedStiffness));
   const auto c = optionalQuantity(b, f, "damping", kind::kBedDamping, Limit::NonNegative,
                                   fromSi(b, si.damping, kind::kBedDamping));
-  const auto mu =
-      optionalQuantity(b, f, "friction", kind::kNumber, Limit::NonNegative, si.friction);
-  const auto slip = optionalQuantity(b, f, "slip_speed", kind::kVelocity, Limit::Positive,
-                                     fromSi(b, si.slip_speed, kind::kVelocity));
+  hydro::SeabedProperties contact;
+  const bool friction_ok = readSeabedFriction(b, f, contact);
   const YAML::Node* slope = f.find("slope");
   const YAML::Node* grid = f.find("grid");
   if (slope && grid) {
@@ -250,8 +253,10 @@ void readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
     if (!bed) return;
     h.bed = *bed;
   }
-  if (!k || !c || !mu || !slip) return;
-  h.contact = {*k, *c, *mu, *slip};
+  if (!k || !c || !friction_ok) return;
+  contact.stiffness = *k;
+  contact.damping = *c;
+  h.contact = contact;
   h.has_contact = true;
 }
 

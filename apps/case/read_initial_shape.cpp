@@ -1,8 +1,9 @@
 // A line's `initial_shape:`, where a run starts it from:
 //   initial_shape: catenary
 //   initial_shape: {type: catenary, friction: 0.0, max_strain: 0.1}
-// friction: the seabed friction coefficient C_B of the catenary's laid part (default 0: the FE
-// model's seabed friction acts on sliding only, so a static equilibrium has none); max_strain:
+// friction: the seabed friction coefficient C_B of the catenary's laid part from an anchor on the
+// bed (default 0: the FE model's seabed friction acts on sliding only, so a static equilibrium has
+// none; a part laid between two hanging ones starts frictionless, catenary_line.hpp); max_strain:
 // the largest mean strain a taut line may need before it is taken as too short for its span.
 // The segments of a multi-segment line (`segment_of:`, read_mesh.cpp) start on one catenary, the
 // line's: each gives initial_shape (the first segment's friction and max_strain count) or none.

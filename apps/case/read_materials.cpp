@@ -1,5 +1,6 @@
 // materials: and sections: of a case file.
 #include "apps/case/case_builder.hpp"
+#include "apps/case/physical_range.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -163,6 +164,8 @@ std::optional<SectionSpec> readSection(CaseBuilder& b, const MapEntry& e) {
   else if (area)
     size = b.in.quantity(*area, f.path("area"), kind::kArea, Limit::Positive);
   const double density = b.in.quantityOr(f, "density", kind::kDensity, Limit::NonNegative, 0.0);
+  if (const YAML::Node* d = f.find("density"))
+    inPhysicalRange(b.in, *d, f.path("density"), density, kSectionDensityRange);
   s.section.area = s.is_membrane ? 0.0 : size.value_or(0.0);
   s.section.density = density;
   s.membrane.thickness = s.is_membrane ? size.value_or(0.0) : 0.0;

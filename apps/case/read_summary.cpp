@@ -353,8 +353,8 @@ bool readSeriesWindow(CaseBuilder& b, Fields& f, const YAML::Node& at, int index
 }
 
 // `line: NAME` of length_on_seabed: the line's elements, their submerged weight per length, and
-// its anchor (the lower end, if supported in z), whose share of the laid weight counts as the
-// bed's. The case must have seabed contact.
+// its anchor (the lower end, if supported in z and at the bed's level), whose share of the laid
+// weight counts as the bed's. The case must have seabed contact.
 bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path, SummarySpec& s) {
   const auto name = b.in.text(n, path);
   if (!name) return false;
@@ -390,7 +390,12 @@ bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path
     return m.reference()(2, node) + (m.isConstrained(node, 2) ? m.prescribed(node, 2) : 0.0);
   };
   const int lower = height(nodes.front()) <= height(nodes.back()) ? nodes.front() : nodes.back();
-  s.node = m.isConstrained(lower, 2) ? lower : -1;
+  // A raised anchor holds the part hanging from it, not the laid part's end: its reaction is not
+  // the bed's.
+  const double bed = b.hydro.bed.height(m.reference()(0, lower) + m.prescribed(lower, 0),
+                                        m.reference()(1, lower) + m.prescribed(lower, 1));
+  const bool at_bed = height(lower) <= bed + positionTolerance(b);
+  s.node = m.isConstrained(lower, 2) && at_bed ? lower : -1;
   // The weight of the element at the anchor, for the anchor's share of the laid weight.
   s.weight_per_length = s.element_weights.front();
   for (size_t i = 0; i < s.elements.size(); ++i) {

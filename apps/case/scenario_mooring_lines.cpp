@@ -209,7 +209,10 @@ bool checkStart(Diagnostics& diag, const YAML::Node& item, const std::string& pa
   const Eigen::Vector3d span = line.fairlead - line.anchor;
   in.horizontal_span = span.head<2>().norm();
   in.vertical_span = span.z();
-  in.seabed = line.anchor.z() <= -depth + tolerance;
+  // The bed carries the line from an anchor on it, or between the parts hanging from a raised
+  // anchor and the fairlead (libhydro/mooring/raised_anchor_catenary.hpp).
+  in.seabed = true;
+  in.anchor_height = line.anchor.z() <= -depth + tolerance ? 0.0 : line.anchor.z() + depth;
   for (const MooringSegment& s : line.segments) {
     const LineType& t = types.at(s.type);
     in.segments.push_back({s.length, (t.mass_per_length - rho * t.area) * g, t.ea});

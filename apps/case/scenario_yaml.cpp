@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "apps/case/physical_range.hpp"
 #include "apps/case/units.hpp"
 
 namespace flexmoor::app {
@@ -90,14 +91,18 @@ ScenarioWater readScenarioWater(Input& in, Fields& top, UnitSystem units) {
   ScenarioWater w;
   if (const YAML::Node* water = top.require("water")) {
     const YAML::Node d = (*water)["density"], h = (*water)["depth"];
-    if (d)
-      w.density = in.quantity(d, "water.density", kind::kDensity, Limit::Positive).value_or(0.0);
+    if (d) {
+      const auto density = in.quantity(d, "water.density", kind::kDensity, Limit::Positive);
+      if (density && inPhysicalRange(in, d, "water.density", *density, kWaterDensityRange))
+        w.density = *density;
+    }
     if (h) w.depth = in.quantity(h, "water.depth", kind::kLength, Limit::Positive).value_or(0.0);
   }
   w.gravity = standardGravity(units);
-  if (const YAML::Node* n = top.find("gravity"))
-    w.gravity =
-        in.quantity(*n, "gravity", kind::kAcceleration, Limit::Positive).value_or(w.gravity);
+  if (const YAML::Node* n = top.find("gravity")) {
+    const auto g = in.quantity(*n, "gravity", kind::kAcceleration, Limit::Positive);
+    if (g && inPhysicalRange(in, *n, "gravity", *g, kGravityRange)) w.gravity = *g;
+  }
   return w;
 }
 

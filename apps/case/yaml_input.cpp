@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <unordered_map>
 
 namespace flexmoor::app {
@@ -181,6 +182,20 @@ std::optional<double> Input::quantity(const YAML::Node& n, const std::string& pa
     value = parseValue(n.Scalar(), kind, units);
   } catch (const UnitError& e) {
     diag.error(n, path + ": " + e.what());
+    return std::nullopt;
+  }
+  // Finite in the case's units, and within kLargestMagnitude in SI: no physical input comes near
+  // it, and the products the solver forms of such values overflow (1e308 ft/s^2 of gravity ends
+  // a run in NaN).
+  if (!std::isfinite(value)) {
+    diag.error(n, path + ": out of range (got " + n.Scalar() +
+                      ", not a finite number in the case's units, expected a finite value)");
+    return std::nullopt;
+  }
+  if (!(std::abs(value * systemScale(kind.dimension, units)) <= kLargestMagnitude)) {
+    diag.error(n, path + ": out of range (got " + n.Scalar() + ", expected a magnitude at most " +
+                      formatNumber(kLargestMagnitude) +
+                      " in SI units: no physical input comes near it)");
     return std::nullopt;
   }
   const bool below = (limit == Limit::Positive && !(value > 0.0)) ||

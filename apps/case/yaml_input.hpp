@@ -80,6 +80,11 @@ class Fields {
 
 enum class Limit { Any, Positive, NonNegative };
 
+// The largest magnitude, in SI units, of any value Input::quantity accepts (beyond it a value is
+// refused as no physical input: the solver's products of it would overflow). The values whose
+// size physics bounds more closely are checked against their own ranges (physical_range.hpp).
+inline constexpr double kLargestMagnitude = 1e30;
+
 // The dimension of every quantity Input::quantity reads on this thread while a QuantityMarks is
 // alive, by the place of its value in the file (YAML::Mark's line and column): a study's
 // parameters take the units of the values they vary from it (apps/study/study_parameters.hpp).
@@ -106,7 +111,8 @@ class Input {
  public:
   Input(Diagnostics& diag, UnitSystem units) : diag(diag), units(units) {}
 
-  // A number, or "NUMBER UNIT" of the right dimension, converted to the case's system.
+  // A number, or "NUMBER UNIT" of the right dimension, converted to the case's system: finite,
+  // of magnitude at most kLargestMagnitude in SI, and within `limit`.
   std::optional<double> quantity(const YAML::Node& n, const std::string& path,
                                  const QuantityKind& kind, Limit limit = Limit::Any);
   // A whole number in [min, max].

@@ -3,98 +3,16 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <optional>
 #include <string>
+
+#include "libhydro/mooring/catenary_pieces.hpp"
+#include "libhydro/mooring/raised_anchor_catenary.hpp"
 
 namespace flexmoor::hydro {
 namespace {
 
-std::string str(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-// The line as the solve sees it: its segments from the anchor, the force at each connection
-// (zero-length for one segment) and the arc length where each segment starts (start[n] = L).
-struct Line {
-  const CatenaryLineInputs& in;
-  std::vector<CatenarySegment> segments;
-  std::vector<double> forces;
-  std::vector<double> start;
-  double length() const { return start.back(); }
-  // The submerged weight of the whole line with its point forces, and a scale for forces.
-  double netWeight() const;
-  double forceScale() const;
-};
-
-std::vector<CatenarySegment> segmentsOf(const CatenaryLineInputs& in) {
-  if (!in.segments.empty()) return in.segments;
-  return {{in.unstretched_length, in.weight, in.axial_stiffness}};
-}
-
-Line makeLine(const CatenaryLineInputs& in) {
-  Line l{in,
-         segmentsOf(in),
-         in.segments.empty() ? std::vector<double>() : in.connection_forces,
-         {0.0}};
-  for (const CatenarySegment& s : l.segments) l.start.push_back(l.start.back() + s.length);
-  return l;
-}
-
-double Line::netWeight() const {
-  double w = 0.0;
-  for (const CatenarySegment& s : segments) w += s.weight * s.length;
-  for (const double f : forces) w -= f;
-  return w;
-}
-
-double Line::forceScale() const {
-  double w = 0.0;
-  for (const CatenarySegment& s : segments) w += s.weight * s.length;
-  for (const double f : forces) w += std::abs(f);
-  return w;
-}
-
-// A laid piece [from, to] of one segment: T(s) = max(top_tension - rate (to - s), 0), rate = C_B w.
-struct LaidPiece {
-  double from, to, top_tension, rate, ea;
-  // int T ds over [a, b] (within the piece) and the length of it in tension.
-  std::pair<double, double> integral(double a, double b) const {
-    const double zero = rate > 0.0 ? to - top_tension / rate : (top_tension > 0.0 ? a : b);
-    const double lo = std::max(a, zero);
-    if (!(lo < b)) return {0.0, 0.0};
-    return {(b - lo) * (tension(lo) + tension(b)) / 2.0, b - lo};
-  }
-  double tension(double s) const { return std::max(top_tension - rate * (to - s), 0.0); }
-};
-
-// A suspended piece of one segment, `length` from `from` up, its vertical force `bottom` at its
-// lower end (V at its top: bottom + w length).
-struct HangingPiece {
-  double from, length, bottom, weight, ea;
-};
-
-// What a piece adds to the spans (x, z), and its Jacobian d(x, z)/d(H, V) at fixed length (V
-// moving the vertical forces of every piece alike), over the length r from its lower end:
-//   x = H/w [asinh(a) - asinh(b)] + H r / EA, z = H/w [sqrt(1 + a^2) - sqrt(1 + b^2)]
-//       + (V_b r + w r^2 / 2) / EA, a = (V_b + w r) / H, b = V_b / H.
-struct Spans {
-  Eigen::Vector2d value = Eigen::Vector2d::Zero();
-  Eigen::Matrix2d jacobian = Eigen::Matrix2d::Zero();
-};
-
-Spans hangingSpans(const HangingPiece& p, double H, double r) {
-  const double w = p.weight, EA = p.ea;
-  const double a = (p.bottom + w * r) / H, b = p.bottom / H;
-  const double ra = std::sqrt(1.0 + a * a), rb = std::sqrt(1.0 + b * b);
-  Spans s;
-  s.value = {H / w * (std::asinh(a) - std::asinh(b)) + H * r / EA,
-             H / w * (ra - rb) + (p.bottom * r + 0.5 * w * r * r) / EA};
-  s.jacobian << (std::asinh(a) - std::asinh(b)) / w - (a / ra - b / rb) / w + r / EA,
-      (1.0 / ra - 1.0 / rb) / w, (1.0 / ra - 1.0 / rb) / w, (a / ra - b / rb) / w + r / EA;
-  return s;
-}
+using namespace catenary_detail;
 
 // The line at fairlead forces (H, V): its laid pieces (from the touchdown down) and its hanging
 // pieces (from the touchdown up).
@@ -119,7 +37,7 @@ Profile profile(const Line& l, double H, double V) {
   Profile p;
   int touch = -1;              // the segment of the touchdown
   bool at_connection = false;  // at its lower connection: a clump weight resting on the bed
-  if (l.in.seabed && bottom[0] < 0.0) {
+  if (anchorOnBed(l.in) && bottom[0] < 0.0) {
     touch = n - 1;  // V <= 0 all the way up: the top segment's equations, extended
     for (int i = 0; i < n; ++i) {
       if (i > 0 && bottom[i] > 0.0) {
@@ -225,22 +143,11 @@ bool newton(const Line& l, Eigen::Vector2d& f, int& iterations, int max_iteratio
   return r_norm <= tolerance(l);
 }
 
-// Bisection of a monotone increasing g on [lo, hi] (g(lo) <= 0 <= g(hi)) to round-off.
-template <class G>
-double bisect(G g, double lo, double hi, int& steps) {
-  for (int k = 0; k < 200 && hi - lo > 1e-15 * std::max(std::abs(lo), std::abs(hi)); ++k) {
-    const double mid = 0.5 * (lo + hi);
-    (g(mid) <= 0.0 ? lo : hi) = mid;
-    ++steps;
-  }
-  return 0.5 * (lo + hi);
-}
-
 // The vertical force V at which H gives the vertical span (z_F rises monotonically with V).
 double verticalFor(const Line& l, double H, int& steps) {
   const double wl = l.forceScale();
   const auto g = [&](double V) { return spans(l, H, V).value(1) - l.in.vertical_span; };
-  double lo = l.in.seabed ? 0.0 : -wl, hi = wl;
+  double lo = anchorOnBed(l.in) ? 0.0 : -wl, hi = wl;
   while (g(lo) > 0.0) lo -= 2.0 * (hi - lo);
   while (g(hi) < 0.0) hi += 2.0 * (hi - lo);
   return bisect(g, lo, hi, steps);
@@ -333,17 +240,22 @@ void check(const Line& l) {
     throw CatenaryError("catenary: no horizontal span between anchor and fairlead (got " +
                         str(in.horizontal_span) +
                         ", expected > 0: a vertical line has no catenary start)");
-  if (in.seabed && in.vertical_span < 0.0)
+  if (in.seabed && (!(in.anchor_height >= 0.0) || !std::isfinite(in.anchor_height)))
+    throw CatenaryError("catenary: the anchor is below the seabed (got " + str(in.anchor_height) +
+                        " above the bed, expected >= 0)");
+  if (in.seabed && in.vertical_span < -in.anchor_height)
     throw CatenaryError("catenary: the fairlead is below the seabed (got " + str(in.vertical_span) +
-                        " above the anchor on the bed, expected >= 0)");
+                        " above the anchor, " + str(in.anchor_height) +
+                        " above the bed, expected >= " + str(-in.anchor_height) + ")");
   const double L = l.length(), chord = std::hypot(in.horizontal_span, in.vertical_span);
   const double strain = chord / L - 1;
   if (strain > in.max_strain)
     throw CatenaryError("catenary: the line is too short for its span (got a chord of " +
                         str(chord) + " for " + str(L) + " unstretched, a strain of " + str(strain) +
                         ", expected at most " + str(in.max_strain) + ")");
+  if (!anchorOnBed(in)) return;  // a raised anchor's slack line: raised_anchor_catenary.cpp
   const double hanging = hangingLength(l);
-  if (in.seabed && in.horizontal_span <= L - hanging)
+  if (in.horizontal_span <= L - hanging)
     throw CatenaryError(
         "catenary: the line is too long for its span: it would lie slack on the seabed (got " +
         str(L) + " unstretched for a span of " + str(in.horizontal_span) + " and " + str(hanging) +
@@ -372,6 +284,7 @@ double CatenaryLine::anchorTension() const {
 
 CatenaryPoint CatenaryLine::at(double s) const {
   const Line l = makeLine(inputs);
+  if (laid_from > 0.0) return pointLaidBetweenHangingParts(l, *this, s);
   const Profile p = profile(l, horizontal, vertical);
   s = std::clamp(s, 0.0, l.length());
   CatenaryPoint point;
@@ -396,11 +309,13 @@ CatenaryPoint CatenaryLine::at(double s) const {
 CatenaryLine solveCatenary(const CatenaryLineInputs& in) {
   const Line l = makeLine(in);
   check(l);
-  CatenaryLine line;
+  if (in.seabed && in.anchor_height > 0.0)
+    if (std::optional<CatenaryLine> laid = solveLaidBetweenHangingParts(l)) return *laid;
+  CatenaryLine line;  // from here, a raised anchor's line hangs clear of the bed
   line.inputs = in;
   line.segments = l.segments;
   Eigen::Vector2d f;
-  const bool fully_laid = in.seabed && in.vertical_span == 0.0;
+  const bool fully_laid = anchorOnBed(in) && in.vertical_span == 0.0;
   if (fully_laid) {
     f = {fullyLaidHorizontal(l, line.iterations), 0.0};
   } else {

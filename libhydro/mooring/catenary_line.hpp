@@ -26,6 +26,14 @@
 // part of the bed's reaction), never below zero. One segment is the case above; the Jacobian is
 // the sum of the pieces' (the touchdown's motion cancels between the laid and the hanging part).
 //
+// A raised anchor (anchor_height > 0 above the flat bed) whose line would hang below the bed lies
+// on it between two suspended parts, one hanging from the anchor down to its touchdown and one
+// from the fairlead: each meets the bed tangentially (V = 0 there), and the laid part between is
+// frictionless (the start takes the equilibrium in which both parts have the same H; friction
+// could hold any difference up to C_B times the laid weight, which no static start determines).
+// Its solve (raised_anchor_catenary.hpp) is a bisection on H, each part's hanging length given by
+// its height above the bed at that H.
+//
 // The solve is Newton on (H, V) with that analytic Jacobian from Peyrot and Goulois' start (as
 // MAP++, with the line's mean submerged weight), safeguarded (H kept positive, backtracking on the
 // span residual); should it stall, a nested bisection (V for the vertical span at fixed H, both
@@ -54,8 +62,9 @@ struct CatenaryLineInputs {
   // them, + up). One segment given here is the line of those three.
   std::vector<CatenarySegment> segments;
   std::vector<double> connection_forces;
-  bool seabed = true;     // the anchor lies on a flat bed that carries the line
-  double friction = 0.0;  // C_B >= 0 on the laid part
+  bool seabed = true;  // a flat bed carries the line: the anchor on it, or anchor_height below it
+  double anchor_height = 0.0;  // the anchor's height above the bed (seabed only), >= 0
+  double friction = 0.0;       // C_B >= 0 on the laid part
   // The largest mean strain a taut line may need (chord / L - 1): above it the line is taken as
   // too short for its span (a typo in the length or the anchor, not a line to start from). 10%
   // is past what steel and chain carry and at the limit of synthetic ropes.
@@ -81,6 +90,9 @@ struct CatenaryLine {
   double anchor_horizontal = 0.0;         // H_A = max(H - C_B w L_B, 0): the force on the anchor,
   double anchor_vertical = 0.0;           // V_A = V - w L when suspended, 0 on the bed (upward +)
   double laid_length = 0.0;               // L_B, unstretched length on the seabed
+  // The arc length where the laid part starts: 0 from an anchor on the bed; the length hanging
+  // from a raised anchor to its touchdown when the line lies on the bed between two hanging parts.
+  double laid_from = 0.0;
   int iterations = 0;  // Newton iterations (and bisection steps, if it fell back)
 
   double length() const;  // the whole unstretched length
@@ -92,10 +104,12 @@ struct CatenaryLine {
 // Solves the line, or throws CatenaryError for one that cannot be started: a non-positive or
 // non-finite length, weight or stiffness (of any segment), a non-finite connection force or not
 // one for each connection, a negative span or friction, no horizontal span (a vertical line), a
-// fairlead below the seabed, a line too short for its span (mean strain above max_strain), a line
-// too long for its span on the seabed (x_F <= L - L_s with L_s the length hanging straight down at
-// H = 0: it lies slack on the bed, H = 0, its shape not determined), and a buoy (F_c > 0) on the
-// laid part (it would lift the line off the bed there: a shape this start does not solve).
+// fairlead or anchor below the seabed, a line too short for its span (mean strain above
+// max_strain), a line too long for its span on the seabed (x_F <= L - L_s with L_s the length
+// hanging straight down at H = 0, from the fairlead and from a raised anchor: it lies slack on the
+// bed, H = 0, its shape not determined), and a buoy (F_c > 0) on the laid part or lifting a part
+// hanging from the bed (it would lift the line off the bed there: a shape this start does not
+// solve).
 CatenaryLine solveCatenary(const CatenaryLineInputs& inputs);
 
 }  // namespace flexmoor::hydro

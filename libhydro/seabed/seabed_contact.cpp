@@ -2,10 +2,12 @@
 
 #include <cmath>
 
+#include "libhydro/seabed/seabed_friction.hpp"
+
 namespace flexmoor::hydro {
 
 SeabedPointLoad seabedLoad(const SeabedProperties& bed, double delta, const Eigen::Vector3d& n,
-                           double width, const Eigen::Vector3d& u_dot) {
+                           double width, const Eigen::Vector3d& u_dot, double node_length) {
   using Eigen::Matrix3d;
   using Eigen::Vector3d;
   SeabedPointLoad out;
@@ -13,7 +15,6 @@ SeabedPointLoad seabedLoad(const SeabedProperties& bed, double delta, const Eige
   // exactly on the bed (a catenary start) is held by it from the first Newton iteration.
   if (!(delta >= 0.0)) return out;
   out.contact = true;
-  const Matrix3d nn = n * n.transpose();
   // The damping's share phi rises linearly over the first kDampingDepth d of penetration.
   const double depth = kDampingDepth * width;
   const double phi = delta < depth ? delta / depth : 1.0, dphi = delta < depth ? 1.0 / depth : 0.0;
@@ -25,26 +26,23 @@ SeabedPointLoad seabedLoad(const SeabedProperties& bed, double delta, const Eige
   out.force = N * n;
   out.d_position = n * dN_dx.transpose();
   out.d_velocity = n * dN_dv.transpose();
-  if (bed.friction > 0.0 && N > 0.0) {
-    const Vector3d vt = u_dot - u_dot.dot(n) * n;
-    const double s = std::sqrt(vt.squaredNorm() + bed.slip_speed * bed.slip_speed);
-    const Vector3d phi = vt / s;  // |phi| < 1, -> v_t / |v_t| when sliding
-    const Matrix3d dphi = (Matrix3d::Identity() / s - vt * vt.transpose() / (s * s * s)) *
-                          (Matrix3d::Identity() - nn);
-    out.force -= bed.friction * N * phi;
-    out.d_position -= bed.friction * phi * dN_dx.transpose();
-    out.d_velocity -= bed.friction * (phi * dN_dv.transpose() + N * dphi);
-  }
+  const FrictionForce f = bed.friction_law == FrictionLaw::MoorDyn
+                              ? moordynFriction(bed.friction, bed.friction_damping / node_length,
+                                                bed.static_dynamic_scale, N, n, u_dot)
+                              : coulombFriction(bed.friction, bed.slip_speed, N, n, u_dot);
+  out.force += f.force;
+  out.d_position += f.d_normal * dN_dx.transpose();
+  out.d_velocity += f.d_normal * dN_dv.transpose() + f.d_velocity;
   return out;
 }
 
 SeabedPointLoad seabedLoadAt(const Bathymetry& bathymetry, const SeabedProperties& bed,
                              const Eigen::Vector3d& contact, double width,
-                             const Eigen::Vector3d& u_dot) {
+                             const Eigen::Vector3d& u_dot, double node_length) {
   const double x = contact.x(), y = contact.y();
   const Eigen::Vector3d n = bathymetry.normal(x, y);
   const double delta = n.z() * (bathymetry.height(x, y) - contact.z());
-  return seabedLoad(bed, delta, n, width, u_dot);
+  return seabedLoad(bed, delta, n, width, u_dot, node_length);
 }
 
 }  // namespace flexmoor::hydro

@@ -2,7 +2,8 @@
 // Seabed contact of a body at a node (seabed_contact.hpp, MoorDyn v2's spring-damper over a
 // projected area): where the body's lowest point, `offset` below the node, is below the bed by
 // delta (along the bed's normal), N = (k_b delta - c_b u'.n) A pushes it out along the normal,
-// with smooth friction along the bed saturating at mu N. Nothing acts above the bed.
+// with friction along the bed (seabed_friction.hpp; the moordyn law's friction damping acts on the
+// body as on one of MoorDyn's nodes). Nothing acts above the bed.
 #include "libhydro/seabed/bathymetry.hpp"
 #include "libhydro/seabed/seabed_contact.hpp"
 #include "libstruct/model/load_point.hpp"

@@ -1,6 +1,7 @@
-// Seabed contact per unit length (MoorDyn v2's spring-damper with smooth saturated friction;
-// docs/theory.md) and bathymetry: closed forms at rest and sliding, and every derivative against
-// central differences on a sloped bed.
+// Seabed contact per unit length (MoorDyn v2's spring-damper with flexmoor's smooth saturated
+// friction; docs/theory.md; MoorDyn's friction law: moordyn_friction_test.cpp) and bathymetry:
+// closed forms at rest and sliding, and every derivative against central differences on a sloped
+// bed.
 #include <gtest/gtest.h>
 
 #include <cmath>
