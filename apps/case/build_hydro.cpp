@@ -106,6 +106,7 @@ void buildOcean(CaseBuilder& b) {
   const std::shared_ptr<const hydro::Sea> sea = makeSea(h, origin);
   b.c.sea = sea;
   b.c.sea_origin = origin;
+  b.c.seabed = std::make_shared<const hydro::Bathymetry>(h.bed);
   const std::vector<const LineHydroSpec*> hydro = elementHydro(b);
   addMorisonLoads(b, sea, hydro);
   for (const BodySpec& body : h.bodies)

@@ -18,6 +18,7 @@
 #include "libstruct/solve/solver_options.hpp"
 
 namespace flexmoor::hydro {
+class Bathymetry;
 class Sea;
 class WaveSpectrum;
 }  // namespace flexmoor::hydro
@@ -124,6 +125,11 @@ struct SummarySpec {
 // `figure:` the PNG a run draws of its time series (flexmoor plot): one panel a series, each in
 // the plot's VARIABLE@INDEX form with the model's 1-based node and element numbers.
 struct FigureSpec {
+  // Series: the time series `series`, one panel each; Mooring: the fairlead tension of every
+  // line that has an anchor over time and the lines' profiles in their vertical planes over the
+  // seabed and under the water line (a spread mooring's figure when the case gives none).
+  enum class Kind { Series, Mooring };
+  Kind kind = Kind::Series;
   std::vector<std::string> series;
   std::string title;  // empty: the case's title
   SourceLocation where;
@@ -175,6 +181,7 @@ struct Case {
   // The water (`water:`, with its waves and current) whose loads act on the model; null for none.
   std::shared_ptr<const hydro::Sea> sea;
   std::optional<SeaOrigin> sea_origin;  // with the sea
+  std::shared_ptr<const hydro::Bathymetry> seabed;  // the bed under the water; null for none
   // "FILE:LINE: warning: ..." for what runs but perhaps not as meant (readCase prints them).
   std::vector<std::string> warnings;
   // "FILE:LINE: note: ..." for the defaults a run chose that the case does not state (a motion's

@@ -6,6 +6,10 @@
 //       - {quantity: speed, node: cable.end}
 //       - {quantity: tension_end, element: 1, end: first}   # end: first | last | 1 | 2
 //       - {quantity: tension_end, line: moor, end: fairlead}  # a line's end (line_refs.cpp)
+//   figure: {kind: mooring}    # every anchored line's fairlead tension and the lines' profiles
+//                              # (a spread mooring's figure when the case gives none)
+#include <algorithm>
+
 #include "apps/case/case_builder.hpp"
 
 namespace flexmoor::app {
@@ -85,15 +89,38 @@ std::optional<std::string> readSeries(CaseBuilder& b, const YAML::Node& item,
          ",end=" + std::to_string(at->end + 1);
 }
 
+// Whether the case has a line with an anchor end (what a mooring figure draws).
+bool anchoredLine(const CaseBuilder& b) {
+  return std::any_of(b.c.named_lines.begin(), b.c.named_lines.end(),
+                     [](const CaseLine& l) { return l.anchor != CaseLine::Anchor::None; });
+}
+
 }  // namespace
 
 void readFigure(CaseBuilder& b, const YAML::Node& n) {
   if (n.IsNull()) return;
-  Fields f(b.diag, n, "figure", {"title", "series"});
+  Fields f(b.diag, n, "figure", {"title", "kind", "series"});
   FigureSpec figure;
   figure.where = {b.diag.file(), lineOf(n)};
   if (const YAML::Node* t = f.find("title"))
     figure.title = b.in.text(*t, f.path("title")).value_or("");
+  if (const YAML::Node* k = f.find("kind"))
+    figure.kind = b.in
+                      .choice<FigureSpec::Kind>(*k, f.path("kind"),
+                                                {{"series", FigureSpec::Kind::Series},
+                                                 {"mooring", FigureSpec::Kind::Mooring}})
+                      .value_or(figure.kind);
+  if (figure.kind == FigureSpec::Kind::Mooring) {
+    if (const YAML::Node* s = f.find("series"))
+      b.diag.error(*s, f.path("series") + ": not a key of a mooring figure (got series, expected "
+                                          "kind: series for time series of your choice)");
+    else if (!anchoredLine(b))
+      b.diag.error(n, "figure: a mooring figure needs a line with an anchor (got none, expected "
+                      "mooring_lines: or a line with anchor: start | end)");
+    else
+      b.c.figure = std::move(figure);
+    return;
+  }
   const YAML::Node* list = f.require("series");
   if (!list) return;
   const std::vector<YAML::Node> items = listItems(b.diag, *list, f.path("series"));

@@ -253,6 +253,7 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
   for (const auto& key : {"name", "title", "units", "water", "waves", "current", "histories",
                           "summary", "figure", "output"})
     if (const YAML::Node* n = top.find(key)) doc[key] = *n;
+  if (!top.find("figure")) doc["figure"]["kind"] = "mooring";  // the tensions and the profiles
   doc["seabed"] = top.find("seabed") ? *top.find("seabed") : YAML::Node(YAML::NodeType::Map);
   for (const auto& [name, t] : types) {
     YAML::Node material, section, hydro;

@@ -222,6 +222,9 @@ Of a run (DIR/<case>.nc of 'flexmoor run'):
                      out a start-up transient)
   --shapes T1,T2     the elements at the records nearest these times, one colour a time, in
                      --plane xz (or xy, yz), equal scales
+  --mooring          every anchored line's fairlead tension over time, and the lines' profiles
+                     (distance from the anchor against z) over the seabed and under the water
+                     line (a spread mooring's figure when its case has no figure:)
 SPEC is VARIABLE@INDEX with 1-based indices as in the file's coordinates:
   position_x@node=5            x of node 5 in the current configuration
   speed@node=5                 |velocity| of node 5
@@ -253,6 +256,7 @@ Examples:
   flexmoor plot RESULT.nc -o sea.png --spectrum wave_elevation --from 100
   flexmoor plot RESULT.nc -o fairlead.png --spectrum tension_end@element=1,end=1 --segment 200
   flexmoor plot RESULT.nc -o shapes.png --shapes 100,200,300
+  flexmoor plot results/oc4-semi-surge/oc4-semi-surge.nc -o mooring.png --mooring
   flexmoor plot DIR/study.nc -o rao.png --rao heave --against waves_components_0_period \
       --wave-height waves_components_0_height
   flexmoor plot DIR/study.nc -o extremes.png --extremes fairlead_tension_1 \

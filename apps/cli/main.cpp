@@ -233,6 +233,9 @@ int main(int argc, char** argv) {
       {"--wave-height", "H|PARAMETER", "--rao: divide by half this wave height", ""}};
   for (FigureOption& o : figure_options)
     plot_command->add_option(o.flag, o.value, o.help)->type_name(o.type);
+  bool mooring = false;
+  plot_command->add_flag("--mooring", mooring,
+                         "the anchored lines' fairlead tensions and profiles over the seabed");
 
   try {
     app.parse(argc, argv);
@@ -249,6 +252,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> given;
     for (const FigureOption& o : figure_options)
       if (!o.value.empty()) given.insert(given.end(), {o.flag, o.value});
+    if (mooring) given.push_back("--mooring");
     return plot(result, png, series, title, given);
   }
   return run(case_name, options);

@@ -9,6 +9,7 @@
 #include "apps/case/units.hpp"
 #include "apps/output/finite_value.hpp"
 #include "apps/output/membrane_resultants.hpp"
+#include "libhydro/seabed/bathymetry.hpp"
 #include "libhydro/waves/sea.hpp"
 #include "libhydro/waves/wave_spectrum.hpp"
 
@@ -121,6 +122,14 @@ void NetcdfWriter::defineHeader(const model::Model& model, const Case& c) {
             " coordinate of the element's centroid (mean of its nodes) in the reference "
             "configuration",
         u.length);
+  }
+  if (c.seabed) {  // the bed under each node, for figures of lines over it
+    seabed_z_ = file_.defineVariable(
+        "seabed_z", NC_DOUBLE, {dim_node_},
+        "height of the seabed under the node's reference position", u.length);
+    seabed_heights_.resize(node_count_);
+    for (int n = 0; n < static_cast<int>(node_count_); ++n)
+      seabed_heights_[n] = c.seabed->height(reference_(0, n), reference_(1, n));
   }
   element_type_ =
       file_.defineVariable("element_type", NC_CHAR, {dim_element_, dim_name_}, "element type");
@@ -296,6 +305,7 @@ void NetcdfWriter::writeMesh(const model::Model& model) {
     }
     file_.put(node_coordinate_[k], {0}, {nodes}, x.data());
   }
+  if (seabed_z_ >= 0) file_.put(seabed_z_, {0}, {nodes}, seabed_heights_.data());
   file_.put(node_index_, {0}, {nodes}, oneBased(nodes).data());
   file_.put(end_index_, {0}, {2}, oneBased(2).data());
   const size_t elements = element_count_;

@@ -162,6 +162,8 @@ class NetcdfWriter final : public ResultSink {
   int dim_node_ = -1, dim_element_ = -1, dim_end_ = -1, dim_name_ = -1;
   int dim_element_node_ = -1, dim_point_ = -1, dim_line_ = -1;
   std::array<int, 3> node_coordinate_{}, element_coordinate_{};
+  int seabed_z_ = -1;                   // with a seabed: its height under each node
+  std::vector<double> seabed_heights_;  // written with the mesh
   int node_index_ = -1, element_index_ = -1, end_index_ = -1;
   int element_type_ = -1, element_node_count_ = -1, element_nodes_ = -1;
   int line_index_ = -1, line_name_ = -1, line_anchor_ = -1;

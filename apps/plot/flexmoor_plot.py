@@ -7,6 +7,8 @@ Of a run's netCDF (DIR/<case>.nc), one figure kind at a time:
     --spectrum SPEC          Welch spectrum (Hann window, half overlap) of one series, against
                              the target spectrum of the run's sea (its sea_spectrum_* attributes)
     --shapes T1,T2,...       the deformed lines at the records nearest those times (a plane)
+    --mooring                every anchored line's fairlead tension over time and the lines'
+                             profiles over the seabed and under the water line
 Of a study's DIR/study.nc:
     --rao NAME --against P   NAME_amplitude against the parameter P (RAO with --wave-height)
     --extremes NAME --against P [--group Q]
@@ -42,6 +44,7 @@ try:
 except ImportError as e:
     missing_module(e)
 
+from mooring_figure import draw_mooring
 from study_figures import draw_extremes, draw_psd, draw_rao
 
 
@@ -459,7 +462,8 @@ def draw_shapes(ds, args):
 
 # --------------------------------------------------------------------------------------------
 
-RUN_KINDS = {"series": draw_series, "spectrum": draw_spectrum, "shapes": draw_shapes}
+RUN_KINDS = {"series": draw_series, "spectrum": draw_spectrum, "shapes": draw_shapes,
+             "mooring": draw_mooring}
 STUDY_KINDS = {"rao": draw_rao, "extremes": draw_extremes, "psd": draw_psd}
 
 
@@ -477,6 +481,7 @@ def main(argv):
     kinds.add_argument("--series", action="append", default=[], metavar="SPEC")
     kinds.add_argument("--spectrum", metavar="SPEC")
     kinds.add_argument("--shapes", metavar="T1,T2,...")
+    kinds.add_argument("--mooring", action="store_const", const=True, default=None)
     kinds.add_argument("--rao", metavar="NAME")
     kinds.add_argument("--extremes", metavar="NAME")
     kinds.add_argument("--psd", metavar="NAME")
@@ -490,7 +495,7 @@ def main(argv):
     parser.add_argument("--title", help="the figure's title (default: the file's title)")
     args = parser.parse_args(argv)
 
-    kind = next((k for k in ("spectrum", "shapes", "rao", "extremes", "psd")
+    kind = next((k for k in ("spectrum", "shapes", "mooring", "rao", "extremes", "psd")
                  if getattr(args, k) is not None), "series")
     used = {"segment": "spectrum", "start": "spectrum", "wave_height": "rao",
             "group": "rao extremes", "against": "rao extremes"}
@@ -509,7 +514,7 @@ def main(argv):
     study = "member" in ds.dims
     if kind in STUDY_KINDS and not study:
         fail("--%s draws a study's DIR/study.nc; %s has no 'member' dimension (a run's "
-             "netCDF takes --series, --spectrum or --shapes)" % (kind, args.result))
+             "netCDF takes --series, --spectrum, --shapes or --mooring)" % (kind, args.result))
     if kind in RUN_KINDS and study:
         fail("%s is a study (a 'member' dimension): it takes --rao, --extremes or --psd"
              % args.result)

@@ -30,8 +30,11 @@ bool drawFigure(const FigureSpec& figure, const std::string& case_title, const s
   const fs::path target(png);
   const std::string temporary =
       (target.parent_path() / ("." + target.stem().string() + ".tmp.png")).string();
-  std::vector<std::string> args = plotArguments(netcdf, temporary, figure.series,
-                                                figure.title.empty() ? case_title : figure.title);
+  const bool mooring = figure.kind == FigureSpec::Kind::Mooring;
+  std::vector<std::string> args =
+      plotArguments(netcdf, temporary, figure.series,
+                    figure.title.empty() ? case_title : figure.title,
+                    mooring ? std::vector<std::string>{"--mooring"} : std::vector<std::string>{});
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
