@@ -1,9 +1,9 @@
-// OC4 surge (cases/ocean/oc4-semi-surge.yaml) with its time steps chosen by their accuracy
-// (`duration: 600 s, output: 0.1 s`, step_tolerance the default 0.01) against the shipped fixed
-// step of 0.1 s, everything else the case's: the six fairlead tension extremes over
-// t >= 100 s, relative; tolerance 1e-3 (the requirement: 0.5%; measured 7.0e-4 at most, line
-// 2's minimum), with no more Newton iterations (measured 13,362 against 13,430). Each run is
-// within 0.04% of a fixed step of 0.025 s (docs/performance.md, Adaptive time steps).
+// OC4 surge (cases/ocean/oc4-semi-surge.yaml, its first 200 s) with its time steps chosen by
+// their accuracy (`duration: 200 s, output: 0.1 s`, step_tolerance the default 0.01) against the
+// shipped fixed step of 0.1 s, everything else the case's: the six fairlead tension extremes
+// over t >= 100 s, relative; tolerance 5e-4 (the requirement: 0.5%; measured 3.0e-4 at most),
+// with no more Newton iterations (measured 4,372 against 4,519). Over the whole 600 s both runs
+// are within 0.04% of a fixed step of 0.025 s (docs/performance.md, Adaptive time steps).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -38,9 +38,10 @@ long iterations(const std::string& log) {
 }
 
 TEST(AdaptiveStepsOc4, ReachTheFixedStepExtremesAtNoMoreIterations) {
-  const std::string shipped = shippedCase();
+  // 200 s of the case's 600: the window t >= 100 s holds 10 periods of the surge.
+  const std::string shipped = replaced(shippedCase(), "steps: 6000", "steps: 2000");
   std::string adaptive =
-      replaced(shipped, "dt: 0.1 s, steps: 6000,", "duration: 600 s, output: 0.1 s,");
+      replaced(shipped, "dt: 0.1 s, steps: 2000,", "duration: 200 s, output: 0.1 s,");
   adaptive = replaced(adaptive, ", output_every: 1}", "}");
   const InProcessRun fixed = runCaseInProcess("oc4-fixed", shipped);
   const InProcessRun chosen = runCaseInProcess("oc4-adaptive", adaptive);
@@ -52,7 +53,7 @@ TEST(AdaptiveStepsOc4, ReachTheFixedStepExtremesAtNoMoreIterations) {
       const std::string key = std::string("tension_") + stat + "_" + std::to_string(line);
       const double error = chosen.value(key) / fixed.value(key) - 1.0;
       worst = std::max(worst, std::abs(error));
-      EXPECT_NEAR(error, 0.0, 1e-3) << key;
+      EXPECT_NEAR(error, 0.0, 5e-4) << key;
     }
   RecordProperty("worst_relative_difference", std::to_string(worst));
   RecordProperty("iterations_fixed", std::to_string(iterations(fixed.log)));
