@@ -92,20 +92,21 @@ std::string testName(std::string case_name) {
 
 std::string runNamedCase(const std::string& case_name) {
   const fs::path dir = scratch(case_name + "-" + std::to_string(getpid()));
-  const CliRun r = flexmoor("run " + case_name + " -o " + dir.string());
+  const CliRun r = flexmoor("run " + case_name + " -o " + dir.string() + " --no-figure");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return readFile(dir / (case_name + ".summary.json"));
 }
 
-CliRun runText(const fs::path& dir, const std::string& name, const std::string& text) {
+CliRun runText(const fs::path& dir, const std::string& name, const std::string& text,
+               const std::string& options) {
   const fs::path file = dir / (name + ".yaml");
   std::ofstream(file) << text;
-  return flexmoor("run " + file.string() + " -o " + dir.string());
+  return flexmoor("run " + file.string() + " -o " + dir.string() + options);
 }
 
 std::string runCaseText(const std::string& name, const std::string& text) {
   const fs::path dir = scratch(name + "-" + std::to_string(getpid()));
-  const CliRun r = runText(dir, name, text);
+  const CliRun r = runText(dir, name, text, " --no-figure");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return readSummary(dir);
 }

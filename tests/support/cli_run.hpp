@@ -33,17 +33,19 @@ double summaryValue(const std::string& json, const std::string& key);
 // A fresh, empty scratch directory for one test.
 std::filesystem::path scratch(const std::string& name);
 
-// Runs a named case (`flexmoor run NAME`) into a scratch directory of its own for this process
-// (ctest -j runs the checks of one case side by side), expects exit code 0 and returns the text
-// of its <case>.summary.json.
+// Runs a named case (`flexmoor run NAME --no-figure`: a figure costs a second of Python) into a
+// scratch directory of its own for this process (ctest -j runs the checks of one case side by
+// side), expects exit code 0 and returns the text of its <case>.summary.json.
 std::string runNamedCase(const std::string& case_name);
 
-// Writes `text` as NAME.yaml into a scratch directory of its own for this process, runs it,
-// expects exit code 0 and returns the text of its <case>.summary.json.
+// Writes `text` as NAME.yaml into a scratch directory of its own for this process, runs it
+// (--no-figure), expects exit code 0 and returns the text of its <case>.summary.json.
 std::string runCaseText(const std::string& name, const std::string& text);
 
-// Writes `text` as DIR/NAME.yaml and runs it with `-o DIR`, whatever its exit code.
-CliRun runText(const std::filesystem::path& dir, const std::string& name, const std::string& text);
+// Writes `text` as DIR/NAME.yaml and runs it with `-o DIR` and `options` (" --no-figure"),
+// whatever its exit code.
+CliRun runText(const std::filesystem::path& dir, const std::string& name, const std::string& text,
+               const std::string& options = "");
 
 // A case name as a GoogleTest name: "ex1-suspended-cable-8xL2" -> "ex1_suspended_cable_8xL2".
 std::string testName(std::string case_name);

@@ -42,7 +42,7 @@ hydro::CatenaryLineInputs chainWireChain() {
 // +0.026 m), in at most 8 Newton iterations from the start (measured 5); every line alike.
 TEST(MultiSegmentMooring, ChainWireChainMatchesItsCatenary) {
   const auto dir = scratch("chain-wire-chain");
-  const CliRun r = flexmoor("run chain-wire-chain-statics -o " + dir.string());
+  const CliRun r = flexmoor("run chain-wire-chain-statics -o " + dir.string() + " --no-figure");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::smatch m;
   ASSERT_TRUE(std::regex_search(r.output, m, std::regex(R"(in 1 increments \((\d+) iterations)")))

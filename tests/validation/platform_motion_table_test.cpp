@@ -60,7 +60,7 @@ std::string run(const std::string& name, const std::string& surge, const std::st
                 const std::string& file_name = "motion.csv") {
   const auto dir = scratch(name);
   if (!csv.empty()) std::ofstream(dir / file_name) << csv;
-  const CliRun r = runText(dir, name, std::regex_replace(kCase, std::regex("SURGE"), surge));
+  const CliRun r = runText(dir, name, std::regex_replace(kCase, std::regex("SURGE"), surge), " --no-figure");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return readSummary(dir);
 }

@@ -105,8 +105,8 @@ TEST(SpreadMooringSurge, FairleadsFollowTheSurgeAndTensionsFollowItsVelocity) {
               1e-9);
   // cpu_seconds, the flexmoor process's CPU time when the summary is evaluated: at most the CPU
   // the run's process took in all (measured here from outside, with its shell), and at least half
-  // of it (after the summary only the files are closed and moved; this case draws no figure). So
-  // it counts the run and is neither a wall clock nor a tick count, whatever the machine's speed.
+  // of it (after the summary only the files are closed and moved). So
+  // it counts the run (runCaseText draws no figure) and is neither a wall clock nor a tick count, whatever the machine's speed.
   // (It was bounded below by 0.1 s, which the 200 steps came to take less than: 0.096 s.)
   const double cost = summaryValue(json, "cost");
   std::cout << "[ SpreadMooringSurge ] cpu_seconds " << cost << " s of the run's " << run_cpu
