@@ -57,8 +57,8 @@ Exit codes:
 Examples:
   flexmoor cases
   flexmoor check cases/seed/ex1-suspended-cable-4xL3.yaml
-  flexmoor run ex1-suspended-cable-8xL2          results in results/ex1-suspended-cable-8xL2/
-  flexmoor run -o /tmp/ex1 ex1-suspended-cable-8xL2 --no-vtk
+  flexmoor run ex1-suspended-cable-8xL2     # results in results/ex1-suspended-cable-8xL2/
+  flexmoor run -o runs/ex1 ex1-suspended-cable-8xL2 --no-vtk
 
 'flexmoor COMMAND --help' tells more about one command. The case-file format is described in
 README.md, and every case under cases/ is a worked example.
@@ -108,7 +108,7 @@ another run of the case is writing into DIR).
 
 Examples:
   flexmoor run ex1-suspended-cable-8xL2
-  flexmoor run -o /tmp/ex1 cases/seed/ex1-suspended-cable-8xL2.yaml --no-vtk
+  flexmoor run -o runs/ex1 cases/seed/ex1-suspended-cable-8xL2.yaml --no-vtk
 )";
 
 inline constexpr const char* kCheckSummary = "check a case file without running it";
@@ -128,7 +128,8 @@ as a study: the file itself, then every member's case built and checked.
 
 Examples:
   flexmoor check ex1-suspended-cable-8xL2
-  flexmoor check my-mooring.yaml
+  flexmoor check cases/ocean/oc4-semi-surge.yaml
+  flexmoor check oc4-semi-surg       # exit 2: no case 'oc4-semi-surg'; did you mean ...?
   flexmoor check cases/studies/tube-rao.yaml
 )";
 
@@ -190,8 +191,8 @@ Exit codes: 0 every member complete; 1 usage error; 2 the study or a member's ca
 
 Examples:
   flexmoor check cases/studies/tube-rao.yaml
-  flexmoor study cases/studies/tube-rao.yaml -o /tmp/rao -j 2
-  mpirun -n 4 flexmoor study cases/studies/oc4-jonswap.yaml -o /shared/oc4
+  flexmoor study cases/studies/tube-rao.yaml -o results/tube-rao -j 2
+  mpirun -n 2 flexmoor study cases/studies/oc4-jonswap.yaml -o results/oc4-jonswap
 )";
 
 inline constexpr const char* kCasesSummary = "list the named cases shipped under cases/";
@@ -199,6 +200,9 @@ inline constexpr const char* kCasesSummary = "list the named cases shipped under
 inline constexpr const char* kCasesDetails = R"(
 Prints one line per case under cases/: the name that 'flexmoor run NAME' and 'flexmoor check
 NAME' accept, then its title. Takes no arguments.
+
+Examples:
+  flexmoor cases
 )";
 
 inline constexpr const char* kPlotSummary = "draw a figure of a run or a study as a PNG";
@@ -247,17 +251,21 @@ Any other failure (the PNG cannot be written, a Python module is missing) is one
 exit code 4.
 
 Examples:
+  flexmoor run driven-taut-cable     # results/driven-taut-cable/driven-taut-cable.nc
   flexmoor plot results/driven-taut-cable/driven-taut-cable.nc -o cable.png
-  flexmoor plot RESULT.nc -o tension.png --series tension_end@element=1,end=first \
-      --series speed@node=5
-  flexmoor plot RESULT.nc -o sea.png --spectrum wave_elevation --from 100
-  flexmoor plot RESULT.nc -o fairlead.png --spectrum tension_end@element=1,end=1 --segment 200
-  flexmoor plot RESULT.nc -o shapes.png --shapes 100,200,300
-  flexmoor plot DIR/study.nc -o rao.png --rao heave --against waves_components_0_period \
-      --wave-height waves_components_0_height
-  flexmoor plot DIR/study.nc -o extremes.png --extremes fairlead_tension_1 \
-      --against waves_spectrum_Hs --group waves_spectrum_seed
-  flexmoor plot DIR/study.nc -o psd.png --psd fairlead_tension_1
+  flexmoor plot results/driven-taut-cable/driven-taut-cable.nc -o tension.png \
+      --series tension_end@element=1,end=first --series speed@node=5
+  flexmoor run oc4-jonswap-base -o results     # a run in a sea: results/oc4-jonswap-base.nc
+  flexmoor plot results/oc4-jonswap-base.nc -o sea.png --spectrum wave_elevation --from 100
+  flexmoor plot results/oc4-jonswap-base.nc -o fairlead.png \
+      --spectrum tension_end@element=1,end=1 --segment 200
+  flexmoor plot results/oc4-jonswap-base.nc -o shapes.png --shapes 100,200,300
+  # the studies of 'flexmoor study --help' (tube-rao's waves are 5 ft high):
+  flexmoor plot results/tube-rao/study.nc -o rao.png --rao heave \
+      --against waves_components_0_period --wave-height 5
+  flexmoor plot results/oc4-jonswap/study.nc -o extremes.png --extremes fairlead_tension_1 \
+      --against waves_spectrum_Hs --group waves_seed
+  flexmoor plot results/oc4-jonswap/study.nc -o psd.png --psd fairlead_tension_1
 )";
 
 }  // namespace flexmoor::cli
