@@ -9,11 +9,13 @@ inline constexpr const char* kDescription =
 
 inline constexpr const char* kOverview = R"(
 A case is one YAML file that states a whole problem: its unit system, materials and sections,
-the mesh (lines, surfaces, nodes, elements), supports, loads and load histories, the analysis
-steps to run in order and the summary quantities to report. CASE is the path of such a file or
-the name of a case shipped under cases/: its file name without .yaml, for example
-ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles); '.yaml' may be
-left off a path too. A name that is not there is refused with the nearest ones ("did you
+the mesh (nodes, lines, elements, surfaces), supports, loads and load histories, the water
+(waves, current, seabed, buoys and clump weights), the analysis steps to run in order, and the
+summary quantities, figure and output fields to report; or a scenario (single_point_moor,
+submerged_tube, spread_mooring) that states a whole model in a few keys. CASE is the path of
+such a file or the name of a case shipped under cases/: its file name without .yaml, for
+example ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles); '.yaml'
+may be left off a path too. A name that is not there is refused with the nearest ones ("did you
 mean ...?").
 
 Units: a case states `units: US` (ft, slug, s; forces in lbf) or `units: SI` (m, kg, s; N).
@@ -22,9 +24,11 @@ converted once, on reading, into the case's system.
 
 Steps run in order, each from the state the previous one left:
   relax    viscous relaxation (Appendix C) from an unstressed start to equilibrium
-  static   load increments by Newton-Raphson, modified Newton or BFGS, or arc length
+  static   load increments by Newton-Raphson, modified Newton, BFGS or the self-corrective
+           scheme, or arc length
   modes    natural frequencies and mode shapes about the current, prestressed state
-  dynamic  Newmark or HHT-alpha time steps with Newton iterations
+  dynamic  Newmark or HHT-alpha time steps with Newton iterations, fixed or chosen by their
+           accuracy
 
 'flexmoor run' writes into DIR (-o DIR; default results/<case>/):
   DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions: time, node, element, end and
@@ -60,8 +64,9 @@ Examples:
   flexmoor run ex1-suspended-cable-8xL2     # results in results/ex1-suspended-cable-8xL2/
   flexmoor run -o runs/ex1 ex1-suspended-cable-8xL2 --no-vtk
 
-'flexmoor COMMAND --help' tells more about one command. The case-file format is described in
-README.md, and every case under cases/ is a worked example.
+'flexmoor COMMAND --help' tells more about one command. The case-file format, every key with
+its default, is described in README.md (section "Case files"), and every case under cases/ is a
+worked example.
 )";
 
 inline constexpr const char* kRunSummary = "run a case and write its results";
@@ -71,12 +76,15 @@ inline constexpr const char* kRunDetails =
 Reads and checks CASE as 'flexmoor check' does (an invalid case runs nothing and exits 2), then
 runs its steps in order, each from the state the previous one left:
   relax    viscous relaxation (Appendix C) carries an unstable, unstressed start to equilibrium
-  static   load increments up to the step's load_factor, by Newton-Raphson, modified Newton or
-           BFGS (Eq. 5.1 convergence), or arc length through limit points (control: arc_length)
+  static   load increments up to the step's load_factor, by Newton-Raphson, modified Newton,
+           BFGS or the self-corrective scheme (Eq. 5.1 convergence), or arc length through
+           limit points (control: arc_length)
   modes    the lowest natural frequencies and mode shapes about the current, prestressed state
-  dynamic  Newmark (Eq. 4.55-4.63) or HHT-alpha time steps with Newton iterations, on a
-           schedule of {dt, steps}; a Newton increment that raises the residual is halved
-           (backtracking), a step that fails is halved and retried; progress is logged
+  dynamic  Newmark (Eq. 4.55-4.63) or HHT-alpha time steps with Newton iterations, fixed
+           (dt with steps or duration, or a schedule of {dt, steps}) or, given a duration
+           alone, each step chosen by its accuracy; a Newton increment that raises the
+           residual is halved (backtracking), a step that fails is halved and retried;
+           progress is logged
 )"
     // How loads and load factors pass from step to step (libstruct/solve).
     R"(

@@ -305,8 +305,10 @@ def main():
                     failed += 1
             summary.append((name, ran, skipped, doc_seconds))
     for name, ran, skipped, seconds in summary:
-        print(f"{name}: {ran['shell']} commands and {ran['python']} Python snippets run "
-              f"({seconds:.0f} s), {len(skipped)} left out", flush=True)
+        plural = lambda n, word: f"{n} {word}" + ("" if n == 1 else "s")  # noqa: E731
+        print(f"{name}: {plural(ran['shell'], 'command')} and "
+              f"{plural(ran['python'], 'Python snippet')} run ({seconds:.0f} s), "
+              f"{len(skipped)} left out", flush=True)
         for item in skipped:
             print(f"  left out {item.line}: {item.text}  ({item.skip})")
     for note in notes:
