@@ -9,11 +9,13 @@ inline constexpr const char* kDescription =
 
 inline constexpr const char* kOverview = R"(
 A case is one YAML file that states a whole problem: its unit system, materials and sections,
-the mesh (lines, surfaces, nodes, elements), supports, loads and load histories, the analysis
-steps to run in order and the summary quantities to report. CASE is the path of such a file or
-the name of a case shipped under cases/: its file name without .yaml, for example
-ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles); '.yaml' may be
-left off a path too. A name that is not there is refused with the nearest ones ("did you
+the mesh (nodes, lines, elements, surfaces), supports, loads and load histories, the water
+(waves, current, seabed, buoys and clump weights), the analysis steps to run in order, and the
+summary quantities, figure and output fields to report; or a scenario (single_point_moor,
+submerged_tube, spread_mooring) that states a whole model in a few keys. CASE is the path of
+such a file or the name of a case shipped under cases/: its file name without .yaml, for
+example ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles); '.yaml'
+may be left off a path too. A name that is not there is refused with the nearest ones ("did you
 mean ...?").
 
 Units: a case states `units: US` (ft, slug, s; forces in lbf) or `units: SI` (m, kg, s; N).
@@ -22,9 +24,11 @@ converted once, on reading, into the case's system.
 
 Steps run in order, each from the state the previous one left:
   relax    viscous relaxation (Appendix C) from an unstressed start to equilibrium
-  static   load increments by Newton-Raphson, modified Newton or BFGS, or arc length
+  static   load increments by Newton-Raphson, modified Newton, BFGS or the self-corrective
+           scheme, or arc length
   modes    natural frequencies and mode shapes about the current, prestressed state
-  dynamic  Newmark or HHT-alpha time steps with Newton iterations
+  dynamic  Newmark or HHT-alpha time steps with Newton iterations, fixed or chosen by their
+           accuracy
 
 'flexmoor run' writes into DIR (-o DIR; default results/<case>/):
   DIR/<case>.nc        netCDF-4 following the CF 1.8 conventions: time, node, element, end and
@@ -57,11 +61,12 @@ Exit codes:
 Examples:
   flexmoor cases
   flexmoor check cases/seed/ex1-suspended-cable-4xL3.yaml
-  flexmoor run ex1-suspended-cable-8xL2          results in results/ex1-suspended-cable-8xL2/
-  flexmoor run -o /tmp/ex1 ex1-suspended-cable-8xL2 --no-vtk
+  flexmoor run ex1-suspended-cable-8xL2     # results in results/ex1-suspended-cable-8xL2/
+  flexmoor run -o runs/ex1 ex1-suspended-cable-8xL2 --no-vtk
 
-'flexmoor COMMAND --help' tells more about one command. The case-file format is described in
-README.md, and every case under cases/ is a worked example.
+'flexmoor COMMAND --help' tells more about one command. The case-file format, every key with
+its default, is described in README.md (section "Case files"), and every case under cases/ is a
+worked example.
 )";
 
 inline constexpr const char* kRunSummary = "run a case and write its results";
@@ -71,12 +76,15 @@ inline constexpr const char* kRunDetails =
 Reads and checks CASE as 'flexmoor check' does (an invalid case runs nothing and exits 2), then
 runs its steps in order, each from the state the previous one left:
   relax    viscous relaxation (Appendix C) carries an unstable, unstressed start to equilibrium
-  static   load increments up to the step's load_factor, by Newton-Raphson, modified Newton or
-           BFGS (Eq. 5.1 convergence), or arc length through limit points (control: arc_length)
+  static   load increments up to the step's load_factor, by Newton-Raphson, modified Newton,
+           BFGS or the self-corrective scheme (Eq. 5.1 convergence), or arc length through
+           limit points (control: arc_length)
   modes    the lowest natural frequencies and mode shapes about the current, prestressed state
-  dynamic  Newmark (Eq. 4.55-4.63) or HHT-alpha time steps with Newton iterations, on a
-           schedule of {dt, steps}; a Newton increment that raises the residual is halved
-           (backtracking), a step that fails is halved and retried; progress is logged
+  dynamic  Newmark (Eq. 4.55-4.63) or HHT-alpha time steps with Newton iterations, fixed
+           (dt with steps or duration, or a schedule of {dt, steps}) or, given a duration
+           alone, each step chosen by its accuracy; a Newton increment that raises the
+           residual is halved (backtracking), a step that fails is halved and retried;
+           progress is logged
 )"
     // How loads and load factors pass from step to step (libstruct/solve).
     R"(
@@ -108,7 +116,7 @@ another run of the case is writing into DIR).
 
 Examples:
   flexmoor run ex1-suspended-cable-8xL2
-  flexmoor run -o /tmp/ex1 cases/seed/ex1-suspended-cable-8xL2.yaml --no-vtk
+  flexmoor run -o runs/ex1 cases/seed/ex1-suspended-cable-8xL2.yaml --no-vtk
 )";
 
 inline constexpr const char* kCheckSummary = "check a case file without running it";
@@ -128,7 +136,8 @@ as a study: the file itself, then every member's case built and checked.
 
 Examples:
   flexmoor check ex1-suspended-cable-8xL2
-  flexmoor check my-mooring.yaml
+  flexmoor check cases/ocean/oc4-semi-surge.yaml
+  flexmoor check oc4-semi-surg       # exit 2: no case 'oc4-semi-surg'; did you mean ...?
   flexmoor check cases/studies/tube-rao.yaml
 )";
 
@@ -190,8 +199,8 @@ Exit codes: 0 every member complete; 1 usage error; 2 the study or a member's ca
 
 Examples:
   flexmoor check cases/studies/tube-rao.yaml
-  flexmoor study cases/studies/tube-rao.yaml -o /tmp/rao -j 2
-  mpirun -n 4 flexmoor study cases/studies/oc4-jonswap.yaml -o /shared/oc4
+  flexmoor study cases/studies/tube-rao.yaml -o results/tube-rao -j 2
+  mpirun -n 2 flexmoor study cases/studies/oc4-jonswap.yaml -o results/oc4-jonswap
 )";
 
 inline constexpr const char* kCasesSummary = "list the named cases shipped under cases/";
@@ -199,6 +208,9 @@ inline constexpr const char* kCasesSummary = "list the named cases shipped under
 inline constexpr const char* kCasesDetails = R"(
 Prints one line per case under cases/: the name that 'flexmoor run NAME' and 'flexmoor check
 NAME' accept, then its title. Takes no arguments.
+
+Examples:
+  flexmoor cases
 )";
 
 inline constexpr const char* kPlotSummary = "draw a figure of a run or a study as a PNG";
@@ -250,18 +262,22 @@ Any other failure (the PNG cannot be written, a Python module is missing) is one
 exit code 4.
 
 Examples:
+  flexmoor run driven-taut-cable     # results/driven-taut-cable/driven-taut-cable.nc
   flexmoor plot results/driven-taut-cable/driven-taut-cable.nc -o cable.png
-  flexmoor plot RESULT.nc -o tension.png --series tension_end@element=1,end=first \
-      --series speed@node=5
-  flexmoor plot RESULT.nc -o sea.png --spectrum wave_elevation --from 100
-  flexmoor plot RESULT.nc -o fairlead.png --spectrum tension_end@element=1,end=1 --segment 200
-  flexmoor plot RESULT.nc -o shapes.png --shapes 100,200,300
-  flexmoor plot results/oc4-semi-surge/oc4-semi-surge.nc -o mooring.png --mooring
-  flexmoor plot DIR/study.nc -o rao.png --rao heave --against waves_components_0_period \
-      --wave-height waves_components_0_height
-  flexmoor plot DIR/study.nc -o extremes.png --extremes fairlead_tension_1 \
-      --against waves_spectrum_Hs --group waves_spectrum_seed
-  flexmoor plot DIR/study.nc -o psd.png --psd fairlead_tension_1
+  flexmoor plot results/driven-taut-cable/driven-taut-cable.nc -o tension.png \
+      --series tension_end@element=1,end=first --series speed@node=5
+  flexmoor run oc4-jonswap-base -o results     # a run in a sea: results/oc4-jonswap-base.nc
+  flexmoor plot results/oc4-jonswap-base.nc -o sea.png --spectrum wave_elevation --from 100
+  flexmoor plot results/oc4-jonswap-base.nc -o fairlead.png \
+      --spectrum tension_end@element=1,end=1 --segment 200
+  flexmoor plot results/oc4-jonswap-base.nc -o shapes.png --shapes 100,200,300
+  flexmoor plot results/oc4-jonswap-base.nc -o mooring.png --mooring
+  # the studies of 'flexmoor study --help' (tube-rao's waves are 5 ft high):
+  flexmoor plot results/tube-rao/study.nc -o rao.png --rao heave \
+      --against waves_components_0_period --wave-height 5
+  flexmoor plot results/oc4-jonswap/study.nc -o extremes.png --extremes fairlead_tension_1 \
+      --against waves_spectrum_Hs --group waves_seed
+  flexmoor plot results/oc4-jonswap/study.nc -o psd.png --psd fairlead_tension_1
 )";
 
 }  // namespace flexmoor::cli

@@ -41,6 +41,11 @@ def axis_label(variable, fallback, units=None):
     return "%s [%s]" % (name, units) if units else name
 
 
+def unit_suffix(units):
+    """' m' after a value; nothing for a pure number (a seed or a count: units "1")."""
+    return " " + units if units and units != "1" else ""
+
+
 def parameter_text(ds, member):
     """'Hs 4 m, seed 2' for one member: its varied parameters."""
     parts = []
@@ -48,7 +53,7 @@ def parameter_text(ds, member):
         value = value_text(ds[p].values[member])
         units = ds[p].attrs.get("units", "")
         parts.append("%s %s%s" % (ds[p].attrs.get("flexmoor_path", p).split(".")[-1], value,
-                                  " " + units if units else ""))
+                                  unit_suffix(units)))
     return ", ".join(parts)
 
 
@@ -95,7 +100,7 @@ def groups_of(ds, group, option):
     out = []
     for v in np.unique(values):
         text = value_text(v)
-        out.append(("%s %s%s" % (label, text, " " + units if units else ""), values == v))
+        out.append(("%s %s%s" % (label, text, unit_suffix(units)), values == v))
     return out
 
 
