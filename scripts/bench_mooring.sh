@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The OC4 surge race against MoorDyn-C (docs/performance.md, "Mooring race"):
 #  1. oc4-semi-surge: the named case's 600 s of surge, its CPU per simulated second against the
-#     target of 5 ms (MoorDyn-C v2.7.1 at its converged resolution: 151 ms);
+#     target of 5 ms (MoorDyn-C v2.7.1 on the same inputs: 3.4 ms at 40 segments, about as
+#     accurate; docs/performance.md, MoorDyn-C on the same case);
 #  2. cost against size: OC4's chain and water, N lines spread evenly around the platform
 #     (3, 30, 300 lines of 20 L3 elements; 3 lines of 20, 100, 500 elements), each surged as in
 #     the named case, results written every step. The time per step is the CPU of a run of
@@ -23,7 +24,7 @@ cpu() {  # $1 case file -> CPU seconds (user + system) of its run
 
 echo "1. oc4-semi-surge, 600 s at dt 0.1 s, written every step"
 total=$(cpu cases/ocean/oc4-semi-surge.yaml)
-printf '   CPU %.2f s = %.2f ms per simulated second (target 5, MoorDyn 151 at 80 segments)\n' \
+printf '   CPU %.2f s = %.2f ms per simulated second (target 5, MoorDyn 3.4 at 40 segments)\n' \
   "$total" "$(echo "$total * 1000 / 600" | bc -l)"
 
 # A spread of $1 lines of $2 L3 elements, OC4's geometry turned to angle 2 pi k / N, surged for
