@@ -11,7 +11,6 @@
 #include "apps/output/membrane_resultants.hpp"
 #include "libhydro/seabed/bathymetry.hpp"
 #include "libhydro/waves/sea.hpp"
-#include "libhydro/waves/wave_spectrum.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -253,26 +252,6 @@ void NetcdfWriter::defineLines() {
       "node_arc_length", NC_DOUBLE, {dim_node_},
       "unstretched arc length along the node's line from the line's start", length_unit_);
   file_.putAttribute(node_arc_length_, "_FillValue", NC_FILL_DOUBLE);  // nodes on no line
-}
-
-void NetcdfWriter::defineSpectrum(const hydro::WaveSpectrum& s, std::pair<double, double> band) {
-  file_.putAttribute(NC_GLOBAL, "sea_spectrum_band", std::vector<double>{band.first, band.second});
-  if (s.isTable()) {
-    file_.putAttribute(NC_GLOBAL, "sea_spectrum", "table");
-    std::vector<double> omega, density;
-    for (const auto& [w, S] : s.samples()) {
-      omega.push_back(w);
-      density.push_back(S);
-    }
-    file_.putAttribute(NC_GLOBAL, "sea_spectrum_omega", omega);
-    file_.putAttribute(NC_GLOBAL, "sea_spectrum_density", density);
-    return;
-  }
-  const double gamma = s.peakEnhancement();
-  file_.putAttribute(NC_GLOBAL, "sea_spectrum", gamma == 1.0 ? "pierson_moskowitz" : "jonswap");
-  file_.putAttribute(NC_GLOBAL, "sea_spectrum_Hs", s.significantHeight());
-  file_.putAttribute(NC_GLOBAL, "sea_spectrum_Tp", 2.0 * std::acos(-1.0) / s.peakFrequency());
-  file_.putAttribute(NC_GLOBAL, "sea_spectrum_gamma", gamma);
 }
 
 int NetcdfWriter::defineIndex(const std::string& name, int dimension,
