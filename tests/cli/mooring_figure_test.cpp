@@ -27,22 +27,16 @@ std::string shipped(const std::string& name) {
 // The lines of the mooring figure's axes `axes` (0: the tensions, 1: the profiles when the run
 // has time records), x then y of each, as numbers.
 std::vector<std::vector<double>> drawn(const std::string& nc, int axes) {
-  const CliRun r = command(
-      "/usr/bin/python3 -c \"import sys, argparse; sys.path.insert(0, '" FLEXMOOR_SOURCE_DIR
-      "/apps/plot'); import xarray as xr, mooring_figure as m; f, _ = m.draw_mooring("
-      "xr.open_dataset('" +
-      nc + "'), argparse.Namespace()); [print(*l.get_xdata()) or print(*l.get_ydata()) for l in "
-           "f.axes[" +
-      std::to_string(axes) + "].lines]\"");
+  const CliRun r =
+      command("/usr/bin/python3 -c \"import sys, argparse; sys.path.insert(0, '" FLEXMOOR_SOURCE_DIR
+              "/apps/plot'); import xarray as xr, mooring_figure as m; f, _ = m.draw_mooring("
+              "xr.open_dataset('" +
+              nc +
+              "'), argparse.Namespace()); [print(*l.get_xdata()) or print(*l.get_ydata()) for l in "
+              "f.axes[" +
+              std::to_string(axes) + "].lines]\"");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  std::vector<std::vector<double>> lines;
-  std::istringstream out(r.output.substr(0, r.output.size() - r.errors.size()));
-  for (std::string line; std::getline(out, line);) {
-    std::istringstream in(line);
-    lines.emplace_back();
-    for (double x; in >> x;) lines.back().push_back(x);
-  }
-  return lines;
+  return printedNumbers(r);
 }
 
 // OC4's statics: no figure: block, so the run draws the mooring figure; its one panel holds, per

@@ -32,18 +32,6 @@ CliRun python(const std::string& body) {
   return r;
 }
 
-// Each line of what a run printed on stdout, as numbers.
-std::vector<std::vector<double>> numbers(const CliRun& r) {
-  std::vector<std::vector<double>> lines;
-  std::istringstream out(r.output.substr(0, r.output.size() - r.errors.size()));
-  for (std::string line; std::getline(out, line);) {
-    std::istringstream in(line);
-    lines.emplace_back();
-    for (double x; in >> x;) lines.back().push_back(x);
-  }
-  return lines;
-}
-
 // The lines' data of the figure `draw` returns, x then y of each line on its first axes.
 std::string printLines(const std::string& draw) {
   return "f, _ = " + draw +
@@ -59,9 +47,10 @@ std::string printLines(const std::string& draw) {
 // peak, to 2e-14 relative (measured 9.8e-15: the same Simpson sums in another order).
 TEST(PlotFigureContent, SpectrumDrawsTheWelchEstimateOfTheSeriesAndTheFilesTarget) {
   const auto nc = runWireInASea("figure-content-spectrum", 200);
-  const auto lines = numbers(python(printLines("p.draw_spectrum(xr.open_dataset('" + nc.string() +
-                                               "'), argparse.Namespace(spectrum='wave_elevation', "
-                                               "segment=50.0, start=None))")));
+  const auto lines =
+      printedNumbers(python(printLines("p.draw_spectrum(xr.open_dataset('" + nc.string() +
+                                       "'), argparse.Namespace(spectrum='wave_elevation', "
+                                       "segment=50.0, start=None))")));
   ASSERT_EQ(lines.size(), 4u);  // the estimate, the target
   const std::vector<double> eta = NetcdfReader(nc.string()).doubles("wave_elevation");
   ASSERT_EQ(eta.size(), 201u);
@@ -92,9 +81,10 @@ TEST(PlotFigureContent, SpectrumDrawsTheWelchEstimateOfTheSeriesAndTheFilesTarge
 // them: equal.
 TEST(PlotFigureContent, ShapesDrawTheNodesWhereTheRecordsPutThem) {
   const auto nc = runWireInASea("figure-content-shapes", 200);
-  const auto lines = numbers(python(printLines("p.draw_shapes(xr.open_dataset('" + nc.string() +
-                                               "'), argparse.Namespace(shapes='0,10,20,50', "
-                                               "plane='xz'))")));
+  const auto lines =
+      printedNumbers(python(printLines("p.draw_shapes(xr.open_dataset('" + nc.string() +
+                                       "'), argparse.Namespace(shapes='0,10,20,50', "
+                                       "plane='xz'))")));
   ASSERT_EQ(lines.size(), 8u);
   const NetcdfReader file(nc.string());
   const std::vector<double> x = file.doubles("position_x"), z = file.doubles("position_z");
@@ -121,7 +111,7 @@ TEST(PlotFigureContent, UnevenRecordsAreInterpolatedOntoTheLargestTimeStep) {
       "ds = xr.Dataset({'step_number': ('time', np.full(t.size, 2))}, coords={'time': t}); "
       "x, dt = p.last_dynamic_record(ds, 3.0 + 2.0 * t, None); print(dt); print(*x)";
   const CliRun r = python(body);
-  const auto lines = numbers(r);
+  const auto lines = printedNumbers(r);
   ASSERT_EQ(lines.size(), 2u);
   ASSERT_EQ(lines[0].size(), 1u);
   EXPECT_EQ(lines[0][0], 0.25);

@@ -97,6 +97,17 @@ std::string runNamedCase(const std::string& case_name) {
   return readFile(dir / (case_name + ".summary.json"));
 }
 
+std::vector<std::vector<double>> printedNumbers(const CliRun& r) {
+  std::vector<std::vector<double>> lines;
+  std::istringstream out(r.output.substr(0, r.output.size() - r.errors.size()));
+  for (std::string line; std::getline(out, line);) {
+    std::istringstream in(line);
+    lines.emplace_back();
+    for (double x; in >> x;) lines.back().push_back(x);
+  }
+  return lines;
+}
+
 CliRun runText(const fs::path& dir, const std::string& name, const std::string& text,
                const std::string& options) {
   const fs::path file = dir / (name + ".yaml");

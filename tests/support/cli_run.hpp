@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace flexmoor::test {
 
@@ -23,6 +24,9 @@ CliRun command(const std::string& line);
 std::pair<uint32_t, uint32_t> pngSize(const std::filesystem::path& path);
 
 std::string readFile(const std::filesystem::path& p);
+
+// Each line a run printed on stdout, as the numbers on it.
+std::vector<std::vector<double>> printedNumbers(const CliRun& r);
 
 // The text of the one <case>.summary.json in `dir` (empty when there is none or several).
 std::string readSummary(const std::filesystem::path& dir);
