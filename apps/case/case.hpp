@@ -14,6 +14,7 @@
 
 #include "apps/case/output_fields.hpp"
 #include "libstruct/model/model.hpp"
+#include "libstruct/model/rigid_body_motion.hpp"
 #include "libstruct/solve/modal.hpp"
 #include "libstruct/solve/solver_options.hpp"
 
@@ -182,6 +183,10 @@ struct Case {
   std::shared_ptr<const hydro::Sea> sea;
   std::optional<SeaOrigin> sea_origin;  // with the sea
   std::shared_ptr<const hydro::Bathymetry> seabed;  // the bed under the water; null for none
+  // The rigid bodies in prescribed motion by name (`histories:` of type rigid_motion, a spread
+  // mooring's `platform`): the points they carry follow them, and a host program may drive them
+  // (RigidBodyMotion::drive).
+  std::map<std::string, std::shared_ptr<model::RigidBodyMotion>> rigid_motions;
   // "FILE:LINE: warning: ..." for what runs but perhaps not as meant (readCase prints them).
   std::vector<std::string> warnings;
   // "FILE:LINE: note: ..." for the defaults a run chose that the case does not state (a motion's

@@ -116,6 +116,7 @@ struct CaseBuilder {
   std::map<std::string, std::shared_ptr<const material::MembraneMaterial>> membrane_materials;
   std::vector<PendingSurface> surface_elements;
   std::map<std::string, std::shared_ptr<const model::TimeFunction>> histories;  // null: broken
+  std::set<std::string> broken_rigid_motions;  // rigid_motion histories given with errors
   std::map<std::string, std::vector<int>> surfaces;  // nodes by name; broken: broken_node_names
   // Type of each element in file order ("cable", "spring", "point_mass", "membrane",
   // "axisymmetric_membrane", "hoop_cable"; "" when broken).

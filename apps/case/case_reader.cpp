@@ -69,6 +69,13 @@ CaseDocument loadCase(const std::string& path) {
   return document;
 }
 
+CaseDocument loadCaseFromText(const std::string& text, const std::string& name) {
+  Diagnostics diag(name);
+  CaseDocument document{name, {}, {}};
+  document.root = loadCaseText(diag, text, document.node_table);
+  return document;
+}
+
 Case readCase(const CaseDocument& document, ForeignSeries* series) {
   const std::string& path = document.path;
   Diagnostics diag(path);

@@ -29,6 +29,9 @@ struct CaseDocument {
 
 // Throws CaseError when the file cannot be read as YAML.
 CaseDocument loadCase(const std::string& path);
+// The same of a case's text, which `name` stands for in messages (relative file names start in
+// the working directory).
+CaseDocument loadCaseFromText(const std::string& text, const std::string& name);
 
 // Series quantities read against the case being built but reported in another file, to its
 // Diagnostics (with `prefix` before each message): a study's collect: entries

@@ -43,20 +43,27 @@ std::optional<PlatformMotion> readPlatform(Input& in, const YAML::Node& n) {
   return p;
 }
 
+YAML::Node platformMotionHistory(const PlatformMotion& p) {
+  YAML::Node h;
+  h["type"] = "rigid_motion";
+  // A clone, not the case's node: yaml-cpp merges the memory of the whole document a node belongs
+  // to into the tree it is put in.
+  for (int dof = 0; dof < 6; ++dof)
+    if (const auto& m = p.motions[dof]) h[kMotions[dof]] = YAML::Clone(*m);
+  if (p.ramp) h["ramp"] = YAML::Clone(*p.ramp);
+  return h;
+}
+
 YAML::Node platformPointHistory(const PlatformMotion& p, const Eigen::Vector3d& point,
                                 const Eigen::Vector3d& from, int component) {
   YAML::Node h;
   h["type"] = "rigid_point";
+  h["motion"] = "platform";
   const Eigen::Vector3d arm = point - p.reference;
   h["arm"] =
       flowSequence({scenarioNumber(arm.x()), scenarioNumber(arm.y()), scenarioNumber(arm.z())});
   h["component"] = std::string(1, "xyz"[component]);
   h["offset"] = scenarioNumber(point[component] - from[component]);
-  // A clone, not the case's node: yaml-cpp merges the memory of the whole document a node belongs
-  // to into the tree it is put in, which made 300 lines' histories cost 3 s of reading.
-  for (int dof = 0; dof < 6; ++dof)
-    if (const auto& m = p.motions[dof]) h[kMotions[dof]] = YAML::Clone(*m);
-  if (p.ramp) h["ramp"] = YAML::Clone(*p.ramp);
   return h;
 }
 

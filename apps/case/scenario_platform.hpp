@@ -36,8 +36,12 @@ struct PlatformMotion {
 // Reads `platform:` (errors at their lines in in.diag; nullopt when wrong).
 std::optional<PlatformMotion> readPlatform(Input& in, const YAML::Node& n);
 
+// The platform's motion as a history of type rigid_motion, which the case names `platform`.
+YAML::Node platformMotionHistory(const PlatformMotion& p);
+
 // The history of component (0, 1, 2 = x, y, z) of the displacement that takes a support from
-// `from` to the platform's point now at `point`: (point - from) at rest, plus the platform's motion.
+// `from` to the platform's point now at `point`: (point - from) at rest, plus the motion of the
+// history `platform` (platformMotionHistory).
 YAML::Node platformPointHistory(const PlatformMotion& p, const Eigen::Vector3d& point,
                                 const Eigen::Vector3d& from, int component);
 

@@ -50,8 +50,9 @@
 //
 // Each fairlead is a support of line_k.end with the displacement that takes the reference end to
 // the fairlead (fairleadSupport below). With `platform:`, the fairleads are points of the rigid
-// platform: each dof of the support follows a history of type rigid_point (named
-// line_k.fairlead_x, _y, _z), the fairlead's rest position plus the platform's motion, its velocity
+// platform, whose motion is the history `platform` of type rigid_motion: each dof of the support
+// follows a history of type rigid_point of it (named line_k.fairlead_x, _y, _z), the fairlead's
+// rest position plus the platform's motion, its velocity
 // and acceleration those of the rigid motion (v + omega x r); the statics hold the platform where
 // the motion puts it at t = 0.
 #include <cmath>
@@ -284,6 +285,12 @@ YAML::Node expandSpreadMooring(Diagnostics& diag, const YAML::Node& root) {
     addFairleadSupports(doc, name, end, m.fairlead, platform);
     if (!top.find("summary"))
       addLineSummary(doc["summary"], name, std::to_string(i + 1), summary_steps);
+  }
+  if (platform) {
+    if (const YAML::Node* h = top.find("histories"); h && (*h)["platform"])
+      diag.error((*h)["platform"], "histories.platform: the name of the platform's motion in a "
+                                   "spread mooring (expected another name)");
+    doc["histories"]["platform"] = platformMotionHistory(*platform);
   }
   doc["loads"]["gravity"]["g"] = scenarioNumber(g);
   if (const YAML::Node* steps = top.find("steps")) {

@@ -216,6 +216,12 @@ YAML::Node loadCaseDocument(Diagnostics& diag, std::optional<NodeTable>& node_ta
   const std::optional<std::string> text = readText(diag.file());
   if (!text) diag.error(0, "cannot open the file");
   diag.throwIfAny();
+  return loadCaseText(diag, *text, node_table);
+}
+
+YAML::Node loadCaseText(Diagnostics& diag, const std::string& text_in,
+                        std::optional<NodeTable>& node_table) {
+  const std::optional<std::string> text = text_in;
   // The node table's fast path (node_table.hpp): parse the text without it when yaml-cpp agrees
   // that it was the top-level `nodes:`; otherwise the whole text, as if there were none.
   std::string without_table = *text;

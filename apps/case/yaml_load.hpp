@@ -29,5 +29,8 @@ size_t aliasBudget(size_t bytes);
 // A plain node table is read by the fast path of node_table.hpp into `node_table` and left out
 // of the document; otherwise `node_table` is empty and `nodes:` is in the document.
 YAML::Node loadCaseDocument(Diagnostics& diag, std::optional<NodeTable>& node_table);
+// The same of a case's text (diag.file() names it in messages).
+YAML::Node loadCaseText(Diagnostics& diag, const std::string& text,
+                        std::optional<NodeTable>& node_table);
 
 }  // namespace flexmoor::app

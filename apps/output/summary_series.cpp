@@ -72,6 +72,12 @@ void SeriesReduction::segment(double t0, double v0, double t1, double v1) {
   sum_squares_ += 0.5 * h * (qa * qa + qb * qb);  // and of q^2
 }
 
+bool SeriesReduction::reached() const {
+  if (reduction_ == Reduction::AtTime)
+    return found_ || (started_ && std::abs(t_ - at_) <= timeSlack(t_));
+  return found_;
+}
+
 double SeriesReduction::value() const {
   if (reduction_ == Reduction::AtTime) {
     if (found_) return at_value_;
@@ -122,7 +128,8 @@ void SummarySeries::sample(const model::State& s) {
 
 std::vector<std::pair<int, double>> SummarySeries::values() const {
   std::vector<std::pair<int, double>> out;
-  for (size_t k = 0; k < specs_.size(); ++k) out.emplace_back(specs_[k], reductions_[k].value());
+  for (size_t k = 0; k < specs_.size(); ++k)
+    if (reductions_[k].reached()) out.emplace_back(specs_[k], reductions_[k].value());
   return out;
 }
 

@@ -34,6 +34,8 @@ class SeriesReduction {
   // Throws std::logic_error when no point of the series was at `at` or in the window (the case
   // reader makes sure it is in the step).
   double value() const;
+  // Whether the series reached its time or its window (a host's run may end before).
+  bool reached() const;
 
  private:
   void point(double value);
@@ -64,7 +66,8 @@ class SummarySeries {
   // Every accepted state of the step in time order, the step's first state (its start
   // acceleration known) first.
   void sample(const model::State& s);
-  // After the step: (index in c.summary, value) of each of its specs.
+  // After the step: (index in c.summary, value) of each of its specs whose time or window the
+  // step reached (a host may end a step before a window it was not given the time to reach).
   std::vector<std::pair<int, double>> values() const;
 
  private:

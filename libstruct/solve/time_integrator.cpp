@@ -444,7 +444,9 @@ model::MotionRecord TimeIntegrator::record(const model::State& s) const {
   return r;
 }
 
-IntegratorCheckpoint TimeIntegrator::save(const model::State& s) const {
+IntegratorCheckpoint TimeIntegrator::save(const model::State& s) {
+  factor_h_ = -1.0;
+  kept_.valid = false;
   return {s, steps_since_update_, force_scale_, h_};
 }
 

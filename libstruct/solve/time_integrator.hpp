@@ -66,7 +66,10 @@ class TimeIntegrator {
   // anew.
   void drive(int node, int component, double displacement, double velocity);
 
-  IntegratorCheckpoint save(const model::State& s) const;
+  // What restore() needs to go on from `s` as this integrator will. The step after a save
+  // assembles and factors its tangent afresh, as the step after a restore does, so that the two
+  // go on identically, to the bit.
+  IntegratorCheckpoint save(const model::State& s);
   void restore(const IntegratorCheckpoint& checkpoint, model::State& s);
 
   const DynamicReport& report() const { return report_; }

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Runs every command the documentation shows, as an engineer would on a first day.
 
-From README.md and docs/tutorial.md: every fenced block marked sh, bash or console (shell
+From README.md, docs/tutorial.md and docs/library.md: every fenced block marked sh, bash or console (shell
 commands, one a line, `\\` continuing a line) and every block marked python (run with
 /usr/bin/python3 where it stands, after the commands above it have written its files). From the
 help texts: the lines under "Examples:" of `flexmoor --help` and of each command's `--help`.
@@ -190,7 +190,7 @@ def help_items(binary, problems):
 
 def make_workdir(source, build):
     work = tempfile.mkdtemp(prefix="flexmoor-docs-")
-    for name in ("cases", "scripts", "apps", "tests"):
+    for name in ("cases", "scripts", "apps", "tests", "examples"):
         os.symlink(os.path.join(source, name), os.path.join(work, name))
     os.symlink(build, os.path.join(work, "build"))
     return work
@@ -250,7 +250,7 @@ def main():
 
     problems = []
     documents = [(name, markdown_items(os.path.join(source, name), name, problems))
-                 for name in ("README.md", "docs/tutorial.md")]
+                 for name in ("README.md", "docs/tutorial.md", "docs/library.md")]
     documents += help_items(binary, problems)
     for p in problems:
         print(f"FAILED {p}")
@@ -259,6 +259,8 @@ def main():
     env = dict(os.environ)
     env["PATH"] = os.path.join(build, "bin") + os.pathsep + env.get("PATH", "")
     env["MPLBACKEND"] = "Agg"
+    # The Python module where docs/library.md says it is in the build tree.
+    env["PYTHONPATH"] = os.path.join(build, "python")
     if os.geteuid() == 0:  # OpenMPI's own switches for what the docs say to add as root
         env["OMPI_ALLOW_RUN_AS_ROOT"] = "1"
         env["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
