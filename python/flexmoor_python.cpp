@@ -66,6 +66,10 @@ std::vector<double> values(const py::object& array, int count, const char* what)
   return std::vector<double>(a.data(), a.data() + count);
 }
 
+std::string fspath(const py::object& path) {
+  return py::str(py::module_::import("os").attr("fspath")(path));
+}
+
 class Checkpoint {
  public:
   explicit Checkpoint(flexmoor_checkpoint_t c) : c_(c, flexmoor_checkpoint_free) {}
@@ -87,10 +91,7 @@ class Simulation {
       const std::string name = d.contains("name") ? py::str(d["name"]).cast<std::string>() : "case";
       code = flexmoor_create_from_yaml(out.c_str(), (name + ".yaml").c_str(), &h);
     } else {
-      code = flexmoor_create(py::str(py::module_::import("os").attr("fspath")(source))
-                                 .cast<std::string>()
-                                 .c_str(),
-                             &h);
+      code = flexmoor_create(fspath(source).c_str(), &h);
     }
     h_.reset(h, flexmoor_close);
     check(h, code);
@@ -98,8 +99,7 @@ class Simulation {
 
   void couple(const std::string& body) { check(h(), flexmoor_couple(h(), body.c_str())); }
   void output(const py::object& directory) {
-    const std::string dir = py::str(py::module_::import("os").attr("fspath")(directory));
-    check(h(), flexmoor_set_output(h(), dir.c_str()));
+    check(h(), flexmoor_set_output(h(), fspath(directory).c_str()));
   }
   int coupledDofs() const {
     int n = 0;
@@ -175,6 +175,12 @@ class Simulation {
     return Checkpoint(c);
   }
   void restore(const Checkpoint& c) { check(h(), flexmoor_restore(h(), c.get())); }
+  void saveFile(const py::object& path) {
+    check(h(), flexmoor_save_file(h(), fspath(path).c_str()));
+  }
+  void restoreFile(const py::object& path) {
+    check(h(), flexmoor_restore_file(h(), fspath(path).c_str()));
+  }
   py::dict finish() {
     check(h(), flexmoor_finish(h()));
     return summary();
@@ -261,6 +267,9 @@ PYBIND11_MODULE(flexmoor, m) {
       .def("node_positions", &Simulation::nodePositions, "Every node's position, (nodes, 3).")
       .def("save", &Simulation::save)
       .def("restore", &Simulation::restore, py::arg("checkpoint"))
+      .def("save_file", &Simulation::saveFile, py::arg("path"),
+           "A checkpoint in a file, for a simulation of the same case to go on from.")
+      .def("restore_file", &Simulation::restoreFile, py::arg("path"))
       .def("finish", &Simulation::finish,
            "Closes the run, writes the results files; returns the summary.")
       .def("run", &Simulation::run,

@@ -13,12 +13,15 @@ cd "$(dirname "$0")/.."
 # python3-xarray, python3-netcdf4: the test that opens a result as the Python ecosystem does;
 # python3-matplotlib: `flexmoor plot`. (Debian's modules, for the system interpreter.)
 # libcli11-dev: the command line.
+# pybind11-dev, python3-dev: the Python module (python/); python3-yaml: its test that gives a case
+# as a dict read from its YAML file.
 # libopenmpi-dev, openmpi-bin: `flexmoor study` under mpirun (the FLEXMOOR_MPI build option,
 # on when CMake finds MPI; without them flexmoor builds and runs studies on local processes).
 packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgsl-dev
           libfftw3-dev libnetcdf-dev netcdf-bin libyaml-cpp-dev libgtest-dev libbenchmark-dev
           libspectra-dev libpng-dev libopenblas0-serial ccache libcli11-dev clang libfuzzer-14-dev
-          python3-xarray python3-netcdf4 python3-matplotlib libopenmpi-dev openmpi-bin)
+          python3-xarray python3-netcdf4 python3-matplotlib libopenmpi-dev openmpi-bin
+          pybind11-dev python3-dev python3-yaml)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -123,6 +123,11 @@ int flexmoor_node_positions(flexmoor_t handle, double* positions);
 int flexmoor_save(flexmoor_t handle, flexmoor_checkpoint_t* checkpoint);
 int flexmoor_restore(flexmoor_t handle, flexmoor_checkpoint_t checkpoint);
 void flexmoor_checkpoint_free(flexmoor_checkpoint_t checkpoint);
+/* The same in a file, to go on in another process: flexmoor_restore_file needs a handle of the
+ * same case, its same bodies coupled, after init. Records after the file's time that the handle
+ * has written already cannot be taken back: restoring to before them is refused. */
+int flexmoor_save_file(flexmoor_t handle, const char* path);
+int flexmoor_restore_file(flexmoor_t handle, const char* path);
 
 /* Runs the whole case as `flexmoor run` does (every step in its own time steps, the prescribed
  * motions its own: no body may be coupled), instead of init, steps and finish. */

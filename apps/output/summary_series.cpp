@@ -72,6 +72,19 @@ void SeriesReduction::segment(double t0, double v0, double t1, double v1) {
   sum_squares_ += 0.5 * h * (qa * qa + qb * qb);  // and of q^2
 }
 
+void SeriesReduction::save(std::vector<double>& out) const {
+  out.insert(out.end(), {started_ ? 1.0 : 0.0, found_ ? 1.0 : 0.0, t_, v_, at_value_, max_, min_,
+                         ref_, length_, sum_, sum_squares_});
+}
+
+void SeriesReduction::resume(const double*& in) {
+  started_ = in[0] != 0.0;
+  found_ = in[1] != 0.0;
+  t_ = in[2], v_ = in[3], at_value_ = in[4], max_ = in[5], min_ = in[6];
+  ref_ = in[7], length_ = in[8], sum_ = in[9], sum_squares_ = in[10];
+  in += 11;
+}
+
 bool SeriesReduction::reached() const {
   if (reduction_ == Reduction::AtTime)
     return found_ || (started_ && std::abs(t_ - at_) <= timeSlack(t_));
@@ -124,6 +137,19 @@ void SummarySeries::sample(const model::State& s) {
   const StateSource source(assembler_, s);
   for (size_t k = 0; k < specs_.size(); ++k)
     reductions_[k].add(s.time, evaluateSummary(c_.summary[specs_[k]], *c_.model, source));
+}
+
+std::vector<double> SummarySeries::progress() const {
+  std::vector<double> out;
+  for (const SeriesReduction& r : reductions_) r.save(out);
+  return out;
+}
+
+void SummarySeries::resume(const std::vector<double>& progress) {
+  if (progress.size() != 11 * reductions_.size())
+    throw std::invalid_argument("the summary's series in the checkpoint are not this case's");
+  const double* in = progress.data();
+  for (SeriesReduction& r : reductions_) r.resume(in);
 }
 
 std::vector<std::pair<int, double>> SummarySeries::values() const {

@@ -36,6 +36,9 @@ class SeriesReduction {
   double value() const;
   // Whether the series reached its time or its window (a host's run may end before).
   bool reached() const;
+  // What the series has gathered, as numbers (a checkpoint in a file), and back.
+  void save(std::vector<double>& out) const;
+  void resume(const double*& in);
 
  private:
   void point(double value);
@@ -66,6 +69,10 @@ class SummarySeries {
   // Every accepted state of the step in time order, the step's first state (its start
   // acceleration known) first.
   void sample(const model::State& s);
+  // What the reductions have gathered, as numbers, and back (a checkpoint in a file).
+  std::vector<double> progress() const;
+  // std::invalid_argument when `progress` is not of these specs.
+  void resume(const std::vector<double>& progress);
   // After the step: (index in c.summary, value) of each of its specs whose time or window the
   // step reached (a host may end a step before a window it was not given the time to reach).
   std::vector<std::pair<int, double>> values() const;

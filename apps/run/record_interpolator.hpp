@@ -21,6 +21,14 @@ class RecordInterpolator {
   model::State state(double t) const;
   void results(double t, std::vector<element::ElementResult>& elements,
                model::NodalField& reactions);
+  // The last two accepted states, and the interpolator put back at them (their results computed
+  // anew when asked: the same numbers).
+  const model::State& before() const { return before_.state; }
+  const model::State& after() const { return after_.state; }
+  void resume(const model::State& before, const model::State& after) {
+    before_ = Accepted{before, false, {}, {}};
+    after_ = Accepted{after, false, {}, {}};
+  }
 
  private:
   struct Accepted {

@@ -9,6 +9,7 @@
 #include "apps/output/summary_quantities.hpp"
 #include "apps/output/summary_series.hpp"
 #include "apps/run/record_interpolator.hpp"
+#include "apps/run/simulation_checkpoint.hpp"
 #include "libstruct/solve/modal.hpp"
 #include "libstruct/solve/static_solver.hpp"
 #include "libstruct/solve/time_integrator.hpp"
@@ -166,24 +167,20 @@ struct Simulation::Dynamic {
   solve::TimeIntegrator integrator;
 };
 
-struct Simulation::Checkpoint {
-  const Simulation* simulation;
-  int step;
-  solve::IntegratorCheckpoint integrator;
-  int accepted, output_index;
-  double next_report, last_record_time;
-  SummarySeries series;
-  RecordInterpolator between;
-};
-
 void Simulation::write(const ResultFrame& f) {
   if (!f.stage && f.state->time > heldFrom()) return held_.hold(f);
-  for (ResultSink* sink : sinks_) sink->write(f);
+  sink(f);
+}
+
+void Simulation::sink(const ResultFrame& f) {
+  if (!f.stage) last_sunk_time_ = std::max(last_sunk_time_, f.state->time);
+  for (ResultSink* s : sinks_) s->write(f);
 }
 
 void Simulation::take(ResultFrame& f) {
   if (sinks_.empty()) return;
   if (!f.stage && f.state->time > heldFrom()) return held_.hold(f);
+  if (!f.stage) last_sunk_time_ = std::max(last_sunk_time_, f.state->time);
   for (size_t k = 0; k + 1 < sinks_.size(); ++k) sinks_[k]->write(f);
   sinks_.back()->take(f);
 }
@@ -198,9 +195,7 @@ double Simulation::heldFrom() {
                                     }),
                      checkpoints_.end());
   if (!held_.empty())
-    held_.release(from, [this](const ResultFrame& f) {
-      for (ResultSink* sink : sinks_) sink->write(f);
-    });
+    held_.release(from, [this](const ResultFrame& f) { sink(f); });
   return from;
 }
 
@@ -330,9 +325,8 @@ void Simulation::endDynamic() {
   out_.frames.push_back(std::move(f));
   dynamic_.reset();
   checkpoints_.clear();
-  held_.release(std::numeric_limits<double>::infinity(), [this](const ResultFrame& f) {
-    for (ResultSink* sink : sinks_) sink->write(f);
-  });
+  held_.release(std::numeric_limits<double>::infinity(),
+                [this](const ResultFrame& f) { sink(f); });
   flush();
 }
 
@@ -369,9 +363,8 @@ void Simulation::failed(const solve::ConvergenceError& e) {
   if (dynamic_) {
     dynamic_.reset();
     checkpoints_.clear();
-    held_.release(std::numeric_limits<double>::infinity(), [this](const ResultFrame& f) {
-      for (ResultSink* sink : sinks_) sink->write(f);
-    });
+    held_.release(std::numeric_limits<double>::infinity(),
+                  [this](const ResultFrame& f) { sink(f); });
   }
   ResultFrame last = frame(i, spec.name + std::string(kLastConvergedSuffix), state_);
   last.stage = true;  // its time may be a time record's already

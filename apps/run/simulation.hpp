@@ -3,6 +3,7 @@
 // flexmoor command wraps it (run_case.hpp: the files, the lock, the summary and the figure), and
 // tests, studies and later the C API and the Python bindings run a case with it without the
 // binary, collecting what they need through their own sinks (memory_sink.hpp).
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -95,6 +96,15 @@ class Simulation {
   // checkpoint's time are dropped. std::invalid_argument for a checkpoint of another step or
   // simulation.
   void restore(const Checkpoint& checkpoint);
+  // A checkpoint in a file (checkpoint_file.cpp), with `host`'s numbers (a host's own state: its
+  // coupled motions), and back: restoreFile needs this case's simulation at the same dynamic
+  // step (prepared), puts it where the file says and returns the host's numbers. Records written
+  // after the file's time stay written; those held back are dropped. std::runtime_error naming
+  // the file when it cannot be written, or read as a checkpoint of this simulation.
+  void saveFile(const std::string& path, const std::vector<double>& host = {});
+  // `check` sees the host's numbers before anything is restored, and may throw.
+  using CheckpointHost = std::function<void(const std::vector<double>& host)>;
+  std::vector<double> restoreFile(const std::string& path, const CheckpointHost& check = {});
 
  private:
   struct Dynamic;
@@ -118,6 +128,7 @@ class Simulation {
   void failed(const solve::ConvergenceError& e);
   void release(const StepSpec& step);
   void write(const ResultFrame& f);
+  void sink(const ResultFrame& f);  // to every sink now
   // write() of a frame that is filled anew for the next record: the last sink may take its
   // contents (ResultSink::take).
   void take(ResultFrame& f);
@@ -148,6 +159,7 @@ class Simulation {
   std::unique_ptr<Dynamic> dynamic_;  // the dynamic step under way
   // The time of the last record of the time axis (-infinity before the first).
   double last_record_time_ = -std::numeric_limits<double>::infinity();
+  double last_sunk_time_ = -std::numeric_limits<double>::infinity();  // of the sinks' records
   HeldRecords held_;
   std::vector<std::weak_ptr<const Checkpoint>> checkpoints_;  // alive ones hold records back
 };

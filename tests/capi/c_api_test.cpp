@@ -141,6 +141,43 @@ TEST(CApi, ARestoredRunRepeatsItsContinuationToTheBit) {
   flexmoor_close(h);
 }
 
+// Check CA7. A checkpoint in a file at 30 s, and on to 40 s; a new handle of the same case
+// (another process's, as it were) restored from the file goes on to 40 s as the first did, and so
+// does the first handle restored from it (reference: the first continuation; tolerance 0). A
+// file of another case, a missing file and a file of other bodies are refused with a message.
+TEST(CApi, ACheckpointFileGoesOnInAnotherHandleToTheBit) {
+  const std::filesystem::path dir = scratch("capi-checkpoint-file");
+  const std::string file = (dir / "oc4-30s.checkpoint").string();
+  flexmoor_t h = coupledOc4();
+  double t = 0.0;
+  ASSERT_EQ(stepTo(h, t, 30.0, 0.1, nullptr), FLEXMOOR_OK);
+  ASSERT_EQ(flexmoor_save_file(h, file.c_str()), FLEXMOOR_OK) << flexmoor_last_error(h);
+  Steps first, other, again;
+  ASSERT_EQ(stepTo(h, t, 40.0, 0.1, &first), FLEXMOOR_OK);
+  flexmoor_t fresh = coupledOc4();
+  ASSERT_EQ(flexmoor_restore_file(fresh, file.c_str()), FLEXMOOR_OK) << flexmoor_last_error(fresh);
+  double t_fresh = 0.0;
+  ASSERT_EQ(flexmoor_time(fresh, &t_fresh), FLEXMOOR_OK);
+  EXPECT_EQ(t_fresh, 30.0);
+  ASSERT_EQ(stepTo(fresh, t_fresh, 40.0, 0.1, &other), FLEXMOOR_OK) << flexmoor_last_error(fresh);
+  ASSERT_EQ(flexmoor_restore_file(h, file.c_str()), FLEXMOOR_OK) << flexmoor_last_error(h);
+  ASSERT_EQ(flexmoor_time(h, &t), FLEXMOOR_OK);
+  ASSERT_EQ(stepTo(h, t, 40.0, 0.1, &again), FLEXMOOR_OK);
+  EXPECT_EQ(first.values, other.values);
+  EXPECT_EQ(first.values, again.values);
+  EXPECT_EQ(flexmoor_restore_file(h, (dir / "missing").c_str()), FLEXMOOR_FAILED);
+  EXPECT_TRUE(contains(flexmoor_last_error(h), "missing")) << flexmoor_last_error(h);
+  // The crane case: another case, and no body coupled in a handle of OC4 is another body count.
+  flexmoor_t plain = nullptr;
+  ASSERT_EQ(flexmoor_create("oc4-semi-surge", &plain), FLEXMOOR_OK);
+  ASSERT_EQ(flexmoor_init(plain, 0, nullptr, nullptr), FLEXMOOR_OK) << flexmoor_last_error(plain);
+  EXPECT_EQ(flexmoor_restore_file(plain, file.c_str()), FLEXMOOR_FAILED);
+  EXPECT_TRUE(contains(flexmoor_last_error(plain), "coupled bodies")) << flexmoor_last_error(plain);
+  flexmoor_close(plain);
+  flexmoor_close(fresh);
+  flexmoor_close(h);
+}
+
 // Check CA3. An absurd motion (the platform 1,000 km away, held there) makes a step fail
 // within three, with a code and a message; the step after it is refused until a restore; after
 // the restore the run goes on as if the failed steps had never been tried (reference: a run
