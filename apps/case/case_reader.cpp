@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/data_dir.hpp"
 #include "apps/case/nearest_names.hpp"
 #include "apps/case/scenario.hpp"
 #include "apps/case/yaml_load.hpp"
@@ -36,11 +37,10 @@ std::string readName(Diagnostics& diag, Input& in, const Fields& top, const std:
   return stem;
 }
 
-// Every .yaml under the cases directory.
+// Every .yaml under the cases directory (data_dir.hpp).
 std::vector<fs::path> caseFiles() {
   std::vector<fs::path> files;
-  const fs::path dir(FLEXMOOR_CASES_DIR);
-  if (!fs::is_directory(dir)) return files;
+  const fs::path dir = casesDir();
   for (const auto& entry : fs::recursive_directory_iterator(dir))
     if (entry.is_regular_file() && entry.path().extension() == ".yaml")
       files.push_back(entry.path());

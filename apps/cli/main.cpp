@@ -132,7 +132,13 @@ int study(const std::string& file, const StudyOptions& options) {
 // xarray belong to it); returns only when the interpreter cannot be started.
 int plot(const std::string& result, const std::string& png, const std::vector<std::string>& series,
          const std::string& title, const std::vector<std::string>& figure_options) {
-  std::vector<std::string> args = plotArguments(result, png, series, title, figure_options);
+  std::vector<std::string> args;
+  try {
+    args = plotArguments(result, png, series, title, figure_options);
+  } catch (const std::exception& e) {  // the script is not found (apps/case/data_dir.hpp)
+    std::cerr << "flexmoor plot: " << e.what() << "\n";
+    return kRunFailed;
+  }
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -143,7 +149,12 @@ int plot(const std::string& result, const std::string& png, const std::vector<st
 }
 
 int listNamedCases() {
-  for (const auto& [name, title] : listCases()) std::cout << name << "  " << title << "\n";
+  try {
+    for (const auto& [name, title] : listCases()) std::cout << name << "  " << title << "\n";
+  } catch (const std::exception& e) {  // the cases folder is not found (apps/case/data_dir.hpp)
+    std::cerr << "flexmoor: " << e.what() << "\n";
+    return kRunFailed;
+  }
   return kSuccess;
 }
 

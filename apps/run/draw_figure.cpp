@@ -7,7 +7,10 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 #include <vector>
+
+#include "apps/case/data_dir.hpp"
 
 extern char** environ;
 
@@ -17,7 +20,7 @@ std::vector<std::string> plotArguments(const std::string& netcdf, const std::str
                                        const std::vector<std::string>& series,
                                        const std::string& title,
                                        const std::vector<std::string>& figure_options) {
-  std::vector<std::string> args = {"/usr/bin/python3", FLEXMOOR_PLOT_SCRIPT, netcdf, "-o", png};
+  std::vector<std::string> args = {"/usr/bin/python3", plotScript().string(), netcdf, "-o", png};
   for (const std::string& s : series) args.insert(args.end(), {"--series", s});
   args.insert(args.end(), figure_options.begin(), figure_options.end());
   if (!title.empty()) args.insert(args.end(), {"--title", title});
@@ -31,10 +34,15 @@ bool drawFigure(const FigureSpec& figure, const std::string& case_title, const s
   const std::string temporary =
       (target.parent_path() / ("." + target.stem().string() + ".tmp.png")).string();
   const bool mooring = figure.kind == FigureSpec::Kind::Mooring;
-  std::vector<std::string> args =
-      plotArguments(netcdf, temporary, figure.series,
-                    figure.title.empty() ? case_title : figure.title,
-                    mooring ? std::vector<std::string>{"--mooring"} : std::vector<std::string>{});
+  std::vector<std::string> args;
+  try {
+    args = plotArguments(
+        netcdf, temporary, figure.series, figure.title.empty() ? case_title : figure.title,
+        mooring ? std::vector<std::string>{"--mooring"} : std::vector<std::string>{});
+  } catch (const std::runtime_error& e) {  // the script is not found (data_dir.hpp)
+    diag << "flexmoor: the figure was not drawn: " << e.what() << "; the results are complete\n";
+    return false;
+  }
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
