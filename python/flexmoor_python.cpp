@@ -118,9 +118,9 @@ class Simulation {
     const std::vector<double> pa = xdd.is_none() ? std::vector<double>() : values(xdd, n, "xdd");
     py::array_t<double> f(n);
     double t = time();
-    check(h(), flexmoor_step(h(), n, n ? px.data() : nullptr, n ? pv.data() : nullptr,
-                             pa.empty() ? nullptr : pa.data(), n ? f.mutable_data() : nullptr, &t,
-                             dt));
+    check(h(),
+          flexmoor_step(h(), n, n ? px.data() : nullptr, n ? pv.data() : nullptr,
+                        pa.empty() ? nullptr : pa.data(), n ? f.mutable_data() : nullptr, &t, dt));
     return f;
   }
   double time() const {

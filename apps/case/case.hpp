@@ -187,7 +187,7 @@ struct Case {
   // mooring's `platform`): the points they carry follow them, and a host program may drive them
   // (RigidBodyMotion::drive).
   std::map<std::string, std::shared_ptr<model::RigidBodyMotion>> rigid_motions;
-  // "FILE:LINE: warning: ..." for what runs but perhaps not as meant (readCase prints them).
+  // "FILE:LINE: warning: ..." for what runs but perhaps not as meant (the command prints them).
   std::vector<std::string> warnings;
   // "FILE:LINE: note: ..." for the defaults a run chose that the case does not state (a motion's
   // ramp); the run prints them.

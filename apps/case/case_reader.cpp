@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <iostream>
 #include <stdexcept>
 
 #include "apps/case/case_builder.hpp"
@@ -132,7 +131,6 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   buildOcean(b);
   c.warnings = diag.warnings();
   c.notes = diag.notes();
-  for (const std::string& w : c.warnings) std::cerr << "flexmoor: " << w << "\n";
   return c;
 }
 

@@ -107,8 +107,8 @@ std::shared_ptr<const model::RigidBodyMotion> rigidMotionRef(CaseBuilder& b, Fie
   const auto found = b.c.rigid_motions.find(*name);
   if (found == b.c.rigid_motions.end()) {
     if (!b.broken_rigid_motions.count(*name))
-      b.diag.error(*n, f.path("motion") + ": unknown rigid motion (got '" + *name +
-                           "', expected " + nameList(b.c.rigid_motions) + ")");
+      b.diag.error(*n, f.path("motion") + ": unknown rigid motion (got '" + *name + "', expected " +
+                           nameList(b.c.rigid_motions) + ")");
     return nullptr;
   }
   return found->second;
@@ -137,8 +137,8 @@ std::shared_ptr<const model::TimeFunction> readRigidPoint(CaseBuilder& b, Fields
   return std::make_shared<model::RigidPointMotion>(body, *arm, *component, offset);
 }
 
-const std::vector<std::string> kRigidMotionKeys = {"type",  "surge", "sway", "heave",
-                                                   "roll",  "pitch", "yaw",  "ramp"};
+const std::vector<std::string> kRigidMotionKeys = {"type", "surge", "sway", "heave",
+                                                   "roll", "pitch", "yaw",  "ramp"};
 
 void readRigidMotion(CaseBuilder& b, const MapEntry& e) {
   Fields f(b.diag, e.value, childPath("histories", e.key), kRigidMotionKeys);
@@ -175,8 +175,9 @@ std::shared_ptr<const model::TimeFunction> readHistory(CaseBuilder& b, const Map
   }
   if (type == "table") return readTable(b, f);
   if (type == "rigid_point") return readRigidPoint(b, f);
-  b.in.choice<int>(*t, f.path("type"),
-                   {{"sine", 0}, {"ramp", 1}, {"table", 2}, {"rigid_point", 3}, {"rigid_motion", 4}});
+  b.in.choice<int>(
+      *t, f.path("type"),
+      {{"sine", 0}, {"ramp", 1}, {"table", 2}, {"rigid_point", 3}, {"rigid_motion", 4}});
   return nullptr;
 }
 

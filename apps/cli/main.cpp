@@ -42,7 +42,9 @@ std::string usageFailure(const CLI::App* app, const CLI::Error& e) {
 // The case named on the command line, read and checked; nullopt after reporting why not.
 std::optional<Case> readNamedCase(const std::string& name) {
   try {
-    return readCase(resolveCasePath(name));
+    Case c = readCase(resolveCasePath(name));
+    for (const std::string& w : c.warnings) std::cerr << "flexmoor: " << w << "\n";
+    return c;
   } catch (const CaseError& e) {
     std::cerr << e.what() << "\n";
   } catch (const std::exception& e) {

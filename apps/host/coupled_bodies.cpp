@@ -13,8 +13,8 @@ std::string rigidMotionNames(const Case& c) {
   return list.empty() ? "none" : list;
 }
 
-model::CoupledMotion::Sample sample(double t, const double* x, const double* xd,
-                                    const double* xdd, int k) {
+model::CoupledMotion::Sample sample(double t, const double* x, const double* xd, const double* xdd,
+                                    int k) {
   return {t, x[k], xd[k], xdd ? xdd[k] : 0.0, xdd != nullptr};
 }
 
@@ -73,7 +73,8 @@ void CoupledBodies::loads(const model::State& s, const model::Assembler& assembl
     for (const Point& p : body.points) {
       const Eigen::Vector3d pull = -reactions_.col(p.node);
       // R arm: the point's place from the reference point where the body is now.
-      const Eigen::Vector3d lever = p.arm + body.motion->pointMotion(p.arm, s.time, 0) - translation;
+      const Eigen::Vector3d lever =
+          p.arm + body.motion->pointMotion(p.arm, s.time, 0) - translation;
       force += pull;
       moment += lever.cross(pull);
     }

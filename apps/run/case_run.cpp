@@ -83,8 +83,8 @@ CaseRun::CaseRun(const Case& c, const RunOptions& options, std::ostream& log, st
                                    "one end or choose another directory with -o");
   const model::Model& m = *c.model;
   log << "flexmoor: case " << c.name << " (" << c.file << ")\n  " << m.nodeCount() << " nodes, "
-      << m.elementCount() << " elements, " << m.equationCount() << " equations, "
-      << c.steps.size() << " steps\n";
+      << m.elementCount() << " elements, " << m.equationCount() << " equations, " << c.steps.size()
+      << " steps\n";
   for (const std::string& note : c.notes) log << "  " << note << "\n";
   netcdf_.emplace(files_.partialNetcdf(), *c.model, c);
   simulation_ = std::make_unique<Simulation>(c, log, diag);

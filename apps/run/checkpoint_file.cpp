@@ -31,6 +31,7 @@ class Writer {
   }
   void field(const model::NodalField& f) { bytes(f.data(), sizeof(double) * f.size()); }
   void state(const model::State& s) {
+    count(s.displacement.cols());  // 0 for a state not set (an interpolator's, fixed steps)
     field(s.displacement);
     field(s.velocity);
     field(s.acceleration);
@@ -40,8 +41,8 @@ class Writer {
     const model::MotionRecord& m = s.motion;
     count(m.valid);
     count(m.mass_kind);
-    for (double x : {m.load_factor, m.rayleigh_mass, m.rayleigh_stiffness, m.hht_alpha,
-                     m.force_scale})
+    for (double x :
+         {m.load_factor, m.rayleigh_mass, m.rayleigh_stiffness, m.hht_alpha, m.force_scale})
       number(x);
   }
   void close(const std::string& path) {
@@ -85,7 +86,9 @@ class Reader {
   }
   void field(model::NodalField& f) { bytes(f.data(), sizeof(double) * f.size()); }
   model::State state(int nodes) {
-    model::State s(nodes);
+    const int64_t columns = count(nodes);
+    if (columns != 0 && columns != nodes) fail("a state of another model");
+    model::State s(static_cast<int>(columns));
     field(s.displacement);
     field(s.velocity);
     field(s.acceleration);

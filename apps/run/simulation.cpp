@@ -194,8 +194,7 @@ double Simulation::heldFrom() {
                                       return !cp;
                                     }),
                      checkpoints_.end());
-  if (!held_.empty())
-    held_.release(from, [this](const ResultFrame& f) { sink(f); });
+  if (!held_.empty()) held_.release(from, [this](const ResultFrame& f) { sink(f); });
   return from;
 }
 
@@ -257,8 +256,7 @@ void Simulation::advanceTo(double t) {
   if (!dynamic_) throw std::logic_error("Simulation::advanceTo: no dynamic step under way");
   if (!(t > state_.time))
     throw std::logic_error("Simulation::advanceTo: time " + std::to_string(t) +
-                           " is not later than the time reached, " +
-                           std::to_string(state_.time));
+                           " is not later than the time reached, " + std::to_string(state_.time));
   Dynamic& d = *dynamic_;
   if (d.step.adaptive()) {
     // A record every output_interval, between the two steps around its time unless a step lands
@@ -294,7 +292,8 @@ void Simulation::advanceTo(double t) {
     return;
   }
   const int n = std::max(1, static_cast<int>(std::ceil(span / dt - 1e-9)));
-  for (int k = 1; k <= n; ++k) d.integrator.stepTo(state_, k == n ? t : from + span * k / n, on_step);
+  for (int k = 1; k <= n; ++k)
+    d.integrator.stepTo(state_, k == n ? t : from + span * k / n, on_step);
 }
 
 void Simulation::driveSchedule() {
@@ -325,8 +324,7 @@ void Simulation::endDynamic() {
   out_.frames.push_back(std::move(f));
   dynamic_.reset();
   checkpoints_.clear();
-  held_.release(std::numeric_limits<double>::infinity(),
-                [this](const ResultFrame& f) { sink(f); });
+  held_.release(std::numeric_limits<double>::infinity(), [this](const ResultFrame& f) { sink(f); });
   flush();
 }
 

@@ -154,7 +154,7 @@ class Simulation {
   solve::SolveLog slog_;
   model::State state_;
   SimulationResult out_;
-  size_t next_ = 0;                   // the next step to run
+  size_t next_ = 0;  // the next step to run
   bool prepared_ = false;
   std::unique_ptr<Dynamic> dynamic_;  // the dynamic step under way
   // The time of the last record of the time axis (-infinity before the first).

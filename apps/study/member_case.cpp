@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <iostream>
 #include <map>
 #include <optional>
 
@@ -69,6 +70,7 @@ std::optional<MemberCase> buildMember(const Study& study, const StudyMember& mem
         {spec.map, spec.path, spec.name, {"name", "statistics", "mpm", "spectrum"}});
   try {
     MemberCase out{readCase(*document, &series), {}};
+    for (const std::string& w : out.c.warnings) std::cerr << "flexmoor: " << w << "\n";
     for (const auto& spec : series.specs) {
       if (!spec) return std::nullopt;  // reported to collect_diag
       out.collect.push_back(*spec);

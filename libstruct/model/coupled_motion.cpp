@@ -8,7 +8,7 @@ void CoupledMotion::next(const Sample& end) { between(end_, end); }
 // and the same at s = 1. With d0, d1, d2 the end conditions less what c0..c2 give there, the
 // quintic's top coefficients are c3 = 10 d0 - 4 d1 + d2 / 2, c4 = -15 d0 + 7 d1 - d2,
 // c5 = 6 d0 - 3 d1 + d2 / 2; the cubic's (no accelerations) c2 = 3 d0 - d1, c3 = d1 - 2 d0.
-void CoupledMotion::between(const Sample& start, const Sample& end) {
+void CoupledMotion::between(Sample start, Sample end) {
   start_ = start;
   end_ = end;
   h_ = end.t - start.t;

@@ -23,7 +23,7 @@ class CoupledMotion final : public TimeFunction {
   // The host's next step ends at end.t (after the current end): the current end becomes its start.
   void next(const Sample& end);
   // The step from `start` to `end` (a state restored).
-  void between(const Sample& start, const Sample& end);
+  void between(Sample start, Sample end);  // by value: next() passes its own end
   // At rest in `s` (no step under way).
   void hold(const Sample& s) { between(s, s); }
   const Sample& start() const { return start_; }

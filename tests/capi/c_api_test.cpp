@@ -4,14 +4,13 @@
 // loads returned are the lines' pull on the platform.
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "apps/capi/flexmoor.h"
 #include "tests/support/cli_run.hpp"

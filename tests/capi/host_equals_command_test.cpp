@@ -15,7 +15,8 @@ namespace {
 
 TEST(CApiHost, DrivesOc4AsTheCommandRunsItToTheBit) {
   const std::filesystem::path dir = scratch("capi-host-oc4");
-  std::string text = readFile(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/ocean/oc4-semi-surge.yaml");
+  std::string text =
+      readFile(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/ocean/oc4-semi-surge.yaml");
   const size_t at = text.find("steps: 6000");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, 11, "steps: 1200");
@@ -23,14 +24,13 @@ TEST(CApiHost, DrivesOc4AsTheCommandRunsItToTheBit) {
   const CliRun cli = flexmoor("run " + (dir / "oc4-120s.yaml").string() + " -o " +
                               (dir / "command").string() + " --no-figure");
   ASSERT_EQ(cli.exit_code, 0) << cli.output;
-  const CliRun host = command(std::string(FLEXMOOR_PLATFORM_HOST) + " " +
-                              (dir / "oc4-120s.yaml").string() + " -o " + (dir / "host").string() +
-                              " --duration 120");
+  const CliRun host =
+      command(std::string(FLEXMOOR_PLATFORM_HOST) + " " + (dir / "oc4-120s.yaml").string() +
+              " -o " + (dir / "host").string() + " --duration 120");
   ASSERT_EQ(host.exit_code, 0) << host.output;
-  const CliRun same = command("/usr/bin/python3 " + std::string(FLEXMOOR_SOURCE_DIR) +
-                              "/tests/capi/same_netcdf.py " +
-                              (dir / "command" / "oc4-120s.nc").string() + " " +
-                              (dir / "host" / "oc4-120s.nc").string());
+  const CliRun same = command(
+      "/usr/bin/python3 " + std::string(FLEXMOOR_SOURCE_DIR) + "/tests/capi/same_netcdf.py " +
+      (dir / "command" / "oc4-120s.nc").string() + " " + (dir / "host" / "oc4-120s.nc").string());
   EXPECT_EQ(same.exit_code, 0) << same.output;
 }
 

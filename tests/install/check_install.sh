@@ -12,6 +12,8 @@
 # 4. A project outside the tree (consumer/) builds against P with find_package(flexmoor) and
 #    again with pkg-config, and both programs run the case in process and print the command's
 #    summary values.
+# 5. The C example host (examples/c/platform_host.c) builds as C99 against P's flexmoor.h with
+#    pkg-config and runs OC4 for 2 s; P's Python module imports and runs Example 8.
 set -euo pipefail
 build=$(cd "$1" && pwd)
 source=$(cd "$2" && pwd)
@@ -124,9 +126,32 @@ print(len(a) > 0 and [k for k, _ in a] == [k for k, _ in b] and
     fail "$program printed '$printed' (expected the command's summary '$expected')"
 done
 
+# 5. The C example host built as C99 against the installed C interface (flexmoor.h) with
+#    pkg-config, and the installed Python module, each running a case from the installed data.
+# shellcheck disable=SC2046  # pkg-config's flags are words
+cc -std=c99 -o "$work/platform_host" "$source/examples/c/platform_host.c" \
+   $(pkg-config --cflags --libs flexmoor) -lm -Wl,-rpath,"$prefix/lib" >"$work/host.log" 2>&1 ||
+  fail "the C example did not build against the installed flexmoor.h: $(cat "$work/host.log")"
+if [ -x "$work/platform_host" ]; then
+  (cd "$work" && ./platform_host oc4-semi-surge -o host --duration 2 >host-run.log 2>&1) ||
+    fail "the installed C example failed: $(cat "$work/host-run.log")"
+  [ -f "$work/host/oc4-semi-surge.nc" ] || fail "the installed C example wrote no results"
+fi
+if [ -d "$prefix/lib/python3/dist-packages" ]; then
+  printed=$(cd "$work" && PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c '
+import flexmoor
+summary = flexmoor.Simulation("ex8-relaxation-test").run()
+print(flexmoor.__file__, len(summary))' 2>&1) ||
+    fail "the installed Python module failed: $printed"
+  case "$printed" in
+    "$prefix/lib/python3/dist-packages/"*) ;;
+    *) fail "python imported another flexmoor module: $printed" ;;
+  esac
+fi
+
 if [ "$failures" -ne 0 ]; then
   echo "install check: $failures failure(s)"
   exit 1
 fi
-echo "install check: the installed tree, the command, FLEXMOOR_DATA_DIR, find_package and" \
-     "pkg-config all work"
+echo "install check: the installed tree, the command, FLEXMOOR_DATA_DIR, find_package," \
+     "pkg-config, the C example and the Python module all work"

@@ -59,7 +59,8 @@ TEST(CoupledMotion, WithoutAccelerationsItIsTheCubicHermite) {
   CoupledMotion s(Sample{0.0, std::sin(0.0), w});
   s.next(Sample{h, std::sin(w * h), w * std::cos(w * h)});
   const double bound = std::pow(h, 4) * std::pow(w, 4) / 384.0;
-  for (double t = 0.0; t <= h; t += h / 10) EXPECT_LE(std::abs(s.value(t) - std::sin(w * t)), bound);
+  for (double t = 0.0; t <= h; t += h / 10)
+    EXPECT_LE(std::abs(s.value(t) - std::sin(w * t)), bound);
 }
 
 // Check CM3. A held motion is constant; a step follows from the end of the last one.

@@ -31,8 +31,8 @@ void expectSameRecords(const app::MemorySink& a, const app::MemorySink& b) {
   }
 }
 
-// Check SS1. Stepped in host-sized steps of 0.05 s (ten of its 0.005 s steps each), then
-// finished: every record and the summary as run() gives them.
+// Check SS1. Stepped in host-sized steps of 0.05 s (ten of its 0.005 s steps each, the host's
+// times on the case's grid: t0 + 10 n dt), then finished: every record as run() gives it.
 TEST(SimulationStepping, AHostsStepsGiveTheRunsRecordsAndSummary) {
   const app::Case c = app::readCase(app::resolveCasePath("ex8-relaxation-test"));
   std::ostringstream log, diag;
@@ -48,7 +48,7 @@ TEST(SimulationStepping, AHostsStepsGiveTheRunsRecordsAndSummary) {
   s.prepare();
   ASSERT_TRUE(s.stepping());
   const double start = s.time();
-  for (int n = 1; n <= 40; ++n) s.advanceTo(start + n * 0.05);
+  for (int n = 1; n <= 40; ++n) s.advanceTo(start + (10 * n) * 0.005);
   const app::SimulationResult result = s.finish();
   EXPECT_THROW(s.advanceTo(10.0), std::logic_error);
   // The case's dynamic step is longer than 2 s: the host ended it at 2 s, so compare the records
@@ -70,30 +70,30 @@ TEST(SimulationStepping, AHostsStepsGiveTheRunsRecordsAndSummary) {
 TEST(SimulationStepping, ARestoreTakesBackTheRecordsAfterItsCheckpoint) {
   const app::Case c = app::readCase(app::resolveCasePath("ex8-relaxation-test"));
   std::ostringstream log, diag;
-  const auto stepTo = [](app::Simulation& s, double start, double end) {
-    for (int n = 1; start + n * 0.05 <= end + 1e-9; ++n) s.advanceTo(start + n * 0.05);
+  double start = 0.0;  // the dynamic step's start; the host steps on its grid, start + k dt
+  const auto stepTo = [&start](app::Simulation& s, int from, int to) {
+    for (int k = from + 10; k <= to; k += 10) s.advanceTo(start + k * 0.005);
   };
   app::MemorySink straight, back;
-  double start = 0.0;
   {
     app::Simulation s(c, log, diag);
     s.addSink(straight);
     s.prepare();
     start = s.time();
-    stepTo(s, start, start + 1.0);
+    stepTo(s, 0, 200);
     s.finish();
   }
   app::Simulation s(c, log, diag);
   s.addSink(back);
   s.prepare();
-  stepTo(s, start, start + 0.5);
+  stepTo(s, 0, 100);
   auto checkpoint = s.save();
   const size_t at_save = back.frames().size();
-  stepTo(s, start + 0.5, start + 1.0);
+  stepTo(s, 100, 200);
   EXPECT_EQ(back.frames().size(), at_save);  // held back
   s.restore(*checkpoint);
-  EXPECT_EQ(s.time(), start + 0.5);
-  stepTo(s, start + 0.5, start + 1.0);
+  EXPECT_EQ(s.time(), start + 100 * 0.005);
+  stepTo(s, 100, 200);
   checkpoint.reset();
   s.finish();
   expectSameRecords(straight, back);
