@@ -135,7 +135,8 @@ def markdown_items(path, name, problems):
         j = start
         while j < len(lines) and lines[j].strip() != ticks:
             j += 1
-        body = [(k + 1, lines[k][indent:] if lines[k][:indent].isspace() else lines[k].lstrip())
+        # The block's lines less the fence's indentation (a Python block keeps its own).
+        body = [(k + 1, lines[k][indent:] if not lines[k][:indent].strip() else lines[k].lstrip())
                 for k in range(start, min(j, len(lines)))]
         where = lambda n: f"{name}:{n}"  # noqa: E731
         if lang in SHELL_LANGS:
