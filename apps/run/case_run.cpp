@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <optional>
 #include <ostream>
@@ -96,27 +97,17 @@ CaseRun::CaseRun(const Case& c, const RunOptions& options, std::ostream& log, st
 
 CaseRun::~CaseRun() = default;
 
-RunOutcome CaseRun::run() {
+RunOutcome CaseRun::run() { return close([this] { return simulation_->run(); }); }
+
+RunOutcome CaseRun::finish() { return close([this] { return simulation_->finish(); }); }
+
+RunOutcome CaseRun::close(const std::function<SimulationResult()>& simulate) {
   std::optional<SimulationResult> result;
   try {
-    result = simulation_->run();
+    result = simulate();
   } catch (const std::exception& e) {
     diag_ << "flexmoor: " << e.what() << "\n";
   }
-  return close(std::move(result));
-}
-
-RunOutcome CaseRun::finish() {
-  std::optional<SimulationResult> result;
-  try {
-    result = simulation_->finish();
-  } catch (const std::exception& e) {
-    diag_ << "flexmoor: " << e.what() << "\n";
-  }
-  return close(std::move(result));
-}
-
-RunOutcome CaseRun::close(std::optional<SimulationResult> result) {
   RunOutcome out;
   out.netcdf_path = files_.netcdf();
   out.summary_path = files_.summary();

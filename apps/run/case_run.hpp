@@ -4,6 +4,7 @@
 // streamed into DIR/<case>.nc.partial while the simulation goes on, and at finish() the VTK
 // files, the summary, the netCDF renamed into place and the figure (run_case.hpp says what a run
 // leaves when it fails).
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -37,7 +38,8 @@ class CaseRun {
   RunOutcome finish();
 
  private:
-  RunOutcome close(std::optional<SimulationResult> result);
+  // Runs `simulate` (the simulation to its end), then writes the files.
+  RunOutcome close(const std::function<SimulationResult()>& simulate);
   const Case& c_;
   RunOptions options_;
   std::ostream& log_;
