@@ -13,9 +13,10 @@ the mesh (nodes, lines, elements, surfaces), supports, loads and load histories,
 (waves, current, seabed, buoys and clump weights), the analysis steps to run in order, and the
 summary quantities, figure and output fields to report; or a scenario (single_point_moor,
 submerged_tube, spread_mooring) that states a whole model in a few keys. CASE is the path of
-such a file or the name of a case shipped under cases/: its file name without .yaml, for
-example ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles); '.yaml'
-may be left off a path too. A name that is not there is refused with the nearest ones ("did you
+such a file or the name of a named case: its file name without .yaml, for example
+ex1-suspended-cable-8xL2 ('flexmoor cases' lists them all with their titles; they are in
+share/flexmoor/cases of the installation, cases/ of the source, or cases/ of the folder
+FLEXMOOR_DATA_DIR names); '.yaml' may be left off a path too. A name that is not there is refused with the nearest ones ("did you
 mean ...?").
 
 Units: a case states `units: US` (ft, slug, s; forces in lbf) or `units: SI` (m, kg, s; N).
