@@ -75,12 +75,6 @@ void requirePhase(const flexmoor_simulation& h, flexmoor_simulation::Phase phase
   throw BadCall(std::string(call) + ": called " + now + " (it is for " + needed + ")");
 }
 
-std::string rigidMotionNames(const app::Case& c) {
-  std::string list;
-  for (const auto& entry : c.rigid_motions) list += (list.empty() ? "" : ", ") + entry.first;
-  return list.empty() ? "none" : list;
-}
-
 const app::CaseLine& lineAt(const flexmoor_simulation& h, int line, const char* call) {
   require(line >= 0 && line < static_cast<int>(h.lines.size()),
           std::string(call) + ": line " + std::to_string(line) + " out of range (the case has " +

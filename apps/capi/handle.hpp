@@ -104,7 +104,5 @@ void requireCount(const flexmoor_simulation& h, int count, const char* call);
 // The named line `line` (0-based) and its node `node`'s model node; BadCall when out of range.
 const app::CaseLine& lineAt(const flexmoor_simulation& h, int line, const char* call);
 int lineNode(const flexmoor_simulation& h, int line, int node, const char* call);
-// "platform, ..." or "none": the case's rigid motions, for messages.
-std::string rigidMotionNames(const app::Case& c);
 
 }  // namespace flexmoor::capi

@@ -31,6 +31,15 @@ int createWith(flexmoor_t* handle, Read&& read) {
   return guarded(*handle, [&](flexmoor_simulation& h) { return create(read(), &h); });
 }
 
+// A run that ended (a RunOutcome or a SimulationResult): its summary kept, its exit code the
+// call's, with what it said of a failure as the handle's message.
+template <class Outcome>
+int ended(flexmoor_simulation& h, const Outcome& out) {
+  h.summary = out.summary;
+  if (out.exit_code != app::kSuccess) h.error = h.diag.lines.kept();
+  return out.exit_code;
+}
+
 }  // namespace
 
 extern "C" {
@@ -81,7 +90,7 @@ int flexmoor_couple(flexmoor_t handle, const char* name) {
     require(name != nullptr, "flexmoor_couple: a null name");
     require(h.c->rigid_motions.count(name),
             std::string("flexmoor_couple: no rigid motion named '") + name + "' in case " +
-                h.c->name + " (its rigid motions: " + rigidMotionNames(*h.c) + ")");
+                h.c->name + " (its rigid motions: " + app::rigidMotionNames(*h.c) + ")");
     for (const std::string& n : h.coupled_names)
       require(n != name, std::string("flexmoor_couple: '") + name + "' is coupled already");
     std::vector<std::string> names = h.coupled_names;
@@ -173,18 +182,8 @@ int flexmoor_finish(flexmoor_t handle) {
   return guarded(handle, [&](flexmoor_simulation& h) {
     requirePhase(h, flexmoor_simulation::Phase::Stepping, "flexmoor_finish");
     h.phase = flexmoor_simulation::Phase::Finished;
-    int code = FLEXMOOR_OK;
-    if (h.run) {
-      const app::RunOutcome out = h.run->finish();
-      h.summary = out.summary;
-      code = out.exit_code;
-    } else {
-      const app::SimulationResult result = h.simulation->finish();
-      h.summary = result.summary;
-      code = result.exit_code;
-    }
-    if (code != FLEXMOOR_OK) h.error = h.diag.lines.kept();
-    return code;
+    if (h.run) return ended(h, h.run->finish());
+    return ended(h, h.simulation->finish());
   });
 }
 
@@ -197,22 +196,14 @@ int flexmoor_run(flexmoor_t handle) {
             "with flexmoor_init and flexmoor_step instead)");
     for (const std::string& w : h.c->warnings) h.diag.stream << w << "\n";
     h.phase = flexmoor_simulation::Phase::Finished;
-    int code = FLEXMOOR_OK;
     if (h.output_dir) {
       app::RunOptions options;
       options.output_dir = *h.output_dir;
       options.figure = false;
-      const app::RunOutcome out = app::runCase(*h.c, options, h.log.stream, h.diag.stream);
-      h.summary = out.summary;
-      code = out.exit_code;
-    } else {
-      app::Simulation simulation(*h.c, h.log.stream, h.diag.stream);
-      const app::SimulationResult result = simulation.run();
-      h.summary = result.summary;
-      code = result.exit_code;
+      return ended(h, app::runCase(*h.c, options, h.log.stream, h.diag.stream));
     }
-    if (code != FLEXMOOR_OK) h.error = h.diag.lines.kept();
-    return code;
+    app::Simulation simulation(*h.c, h.log.stream, h.diag.stream);
+    return ended(h, simulation.run());
   });
 }
 

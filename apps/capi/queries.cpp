@@ -7,6 +7,26 @@
 using namespace flexmoor;
 using namespace flexmoor::capi;
 
+namespace {
+
+// Node `node` of line `line` now: its position (order 0: reference + displacement) or velocity.
+int lineNodeState(flexmoor_t handle, int line, int node, double out[3], int order,
+                  const char* call) {
+  return guarded(handle, [&](flexmoor_simulation& h) {
+    requireState(h, call);
+    require(out != nullptr, std::string(call) + ": a null array");
+    const int n = lineNode(h, line, node, call);
+    const model::State& s = h.simulation->state();
+    const Eigen::Vector3d v =
+        order == 0 ? Eigen::Vector3d(h.c->model->reference().col(n) + s.displacement.col(n))
+                   : Eigen::Vector3d(s.velocity.col(n));
+    for (int k = 0; k < 3; ++k) out[k] = v[k];
+    return FLEXMOOR_OK;
+  });
+}
+
+}  // namespace
+
 extern "C" {
 
 int flexmoor_time(flexmoor_t handle, double* t) {
@@ -52,25 +72,11 @@ int flexmoor_line_node_count(flexmoor_t handle, int line, int* count) {
 }
 
 int flexmoor_line_node_position(flexmoor_t handle, int line, int node, double position[3]) {
-  return guarded(handle, [&](flexmoor_simulation& h) {
-    requireState(h, "flexmoor_line_node_position");
-    require(position != nullptr, "flexmoor_line_node_position: a null array");
-    const int n = lineNode(h, line, node, "flexmoor_line_node_position");
-    const Eigen::Vector3d x =
-        h.c->model->reference().col(n) + h.simulation->state().displacement.col(n);
-    for (int k = 0; k < 3; ++k) position[k] = x[k];
-    return FLEXMOOR_OK;
-  });
+  return lineNodeState(handle, line, node, position, 0, "flexmoor_line_node_position");
 }
 
 int flexmoor_line_node_velocity(flexmoor_t handle, int line, int node, double velocity[3]) {
-  return guarded(handle, [&](flexmoor_simulation& h) {
-    requireState(h, "flexmoor_line_node_velocity");
-    require(velocity != nullptr, "flexmoor_line_node_velocity: a null array");
-    const int n = lineNode(h, line, node, "flexmoor_line_node_velocity");
-    for (int k = 0; k < 3; ++k) velocity[k] = h.simulation->state().velocity(k, n);
-    return FLEXMOOR_OK;
-  });
+  return lineNodeState(handle, line, node, velocity, 1, "flexmoor_line_node_velocity");
 }
 
 int flexmoor_line_end_tension(flexmoor_t handle, int line, int end, double* tension) {

@@ -7,12 +7,6 @@
 namespace flexmoor::app {
 namespace {
 
-std::string rigidMotionNames(const Case& c) {
-  std::string list;
-  for (const auto& entry : c.rigid_motions) list += (list.empty() ? "" : ", ") + entry.first;
-  return list.empty() ? "none" : list;
-}
-
 model::CoupledMotion::Sample sample(double t, const double* x, const double* xd, const double* xdd,
                                     int k) {
   return {t, x[k], xd[k], xdd ? xdd[k] : 0.0, xdd != nullptr};
@@ -20,8 +14,13 @@ model::CoupledMotion::Sample sample(double t, const double* x, const double* xd,
 
 }  // namespace
 
-CoupledBodies::CoupledBodies(const Case& c, const std::vector<std::string>& names)
-    : c_(c), names_(names) {
+std::string rigidMotionNames(const Case& c) {
+  std::string list;
+  for (const auto& entry : c.rigid_motions) list += (list.empty() ? "" : ", ") + entry.first;
+  return list.empty() ? "none" : list;
+}
+
+CoupledBodies::CoupledBodies(const Case& c, const std::vector<std::string>& names) {
   for (size_t b = 0; b < names.size(); ++b) {
     const auto found = c.rigid_motions.find(names[b]);
     if (found == c.rigid_motions.end())

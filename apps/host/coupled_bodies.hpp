@@ -16,6 +16,9 @@
 
 namespace flexmoor::app {
 
+// "platform, ..." or "none": the rigid motions of `c` a host may couple, for messages.
+std::string rigidMotionNames(const Case& c);
+
 class CoupledBodies {
  public:
   static constexpr int kDofs = 6;  // per body
@@ -26,7 +29,6 @@ class CoupledBodies {
   CoupledBodies(const Case& c, const std::vector<std::string>& names);
 
   int dofs() const { return kDofs * static_cast<int>(bodies_.size()); }
-  const std::vector<std::string>& names() const { return names_; }
 
   // At rest at time t in the states x, xd and xdd (dofs() values each; xdd may be null: zero),
   // where the statics find them: the start.
@@ -54,8 +56,6 @@ class CoupledBodies {
     std::array<std::shared_ptr<model::CoupledMotion>, kDofs> dofs;
     std::vector<Point> points;
   };
-  const Case& c_;
-  std::vector<std::string> names_;
   std::vector<Body> bodies_;
   mutable model::NodalField reactions_;
 };

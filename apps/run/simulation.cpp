@@ -200,9 +200,9 @@ double Simulation::heldFrom() {
 
 void Simulation::record(const model::State& s) {
   Dynamic& d = *dynamic_;
-  // Held records are kept whole: their results are computed now.
+  // Held records are kept whole: their results are computed now (take() decides what is held).
   const Results results =
-      d.results == Results::Pending && std::isfinite(heldFrom()) ? Results::Now : d.results;
+      d.results == Results::Pending && !checkpoints_.empty() ? Results::Now : d.results;
   fill(d.i, d.step.name, s, d.streamed, results);
   take(d.streamed);
   last_record_time_ = s.time;
