@@ -22,6 +22,7 @@ class SeabedLineLoad final : public model::LineLoad {
 
   model::PointForce evaluate(const model::LoadPoint& p, bool jacobians) const override;
   model::LengthMeasure measure() const override { return model::LengthMeasure::Reference; }
+  bool contact() const override { return true; }
 
  private:
   Bathymetry bed_;

@@ -17,6 +17,7 @@ class SeabedNodeLoad final : public model::NodeLoad {
   SeabedNodeLoad(int node, Bathymetry bed, SeabedProperties properties, double area, double offset);
 
   int node() const override { return node_; }
+  bool contact() const override { return true; }
   model::PointForce evaluate(const model::LoadPoint& p, bool jacobians) const override;
 
  private:

@@ -52,6 +52,10 @@ class LineLoad {
   // False for a load whose derivatives should stay out of the tangent (a load the caller knows to
   // be weak, or one being measured without them).
   virtual bool stiff() const { return true; }
+  // True for contact: a load that acts only on one side of a surface (the seabed), so that its
+  // force and matrices switch on as a point crosses it. The time integrator then takes the
+  // loads' matrices where its iterations start (TimeIntegrator::attempt).
+  virtual bool contact() const { return false; }
 };
 
 // A load at a node (a buoy, a clump weight, a fairlead's host): its force and derivatives.
@@ -61,6 +65,7 @@ class NodeLoad {
   virtual int node() const = 0;
   virtual PointForce evaluate(const LoadPoint& p, bool jacobians) const = 0;
   virtual bool stiff() const { return true; }
+  virtual bool contact() const { return false; }  // as LineLoad::contact
 };
 
 // A pressure at a surface point and its gradient in the point's position. It acts along the

@@ -1,5 +1,6 @@
 #include "libstruct/model/model.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -98,6 +99,13 @@ void Model::numberEquations() {
   equation_count_ = 0;
   for (int n = 0; n < nodeCount(); ++n)
     for (int k = 0; k < 3; ++k) equation_(k, n) = constrained_(k, n) ? -1 : equation_count_++;
+}
+
+bool Model::hasContactLoads() const {
+  return std::any_of(line_loads_.begin(), line_loads_.end(),
+                     [](const auto& load) { return load->contact(); }) ||
+         std::any_of(node_loads_.begin(), node_loads_.end(),
+                     [](const auto& load) { return load->contact(); });
 }
 
 }  // namespace flexmoor::model

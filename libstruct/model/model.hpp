@@ -76,6 +76,8 @@ class Model {
   bool hasMotionLoads() const {
     return !line_loads_.empty() || !node_loads_.empty() || !surface_loads_.empty();
   }
+  // Whether a line or node load is contact (LineLoad::contact).
+  bool hasContactLoads() const;
 
   bool isConstrained(int node, int component) const { return constrained_(component, node); }
   double prescribed(int node, int component) const { return prescribed_(component, node); }

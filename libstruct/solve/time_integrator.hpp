@@ -106,6 +106,7 @@ class TimeIntegrator {
   SolveLog log_;
   double gamma_, beta_, alpha_;
   bool motion_loads_;                      // the model has stiff motion-dependent loads in use
+  bool contact_loads_;                     // and some of them are contact (LineLoad::contact)
   std::vector<Eigen::MatrixXd> masses_;    // element mass matrices, constant
   model::SparseMatrix M_, K_, K0_, Keff_;  // on the assembler's pattern
   // The motion loads' matrices at their last update, and the internal damping's dF_d/du,
