@@ -12,10 +12,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/case/hydro_spec.hpp"
 #include "apps/case/node_table.hpp"
 #include "apps/case/yaml_input.hpp"
+#include "apps/problem/case.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/membrane_element.hpp"
 

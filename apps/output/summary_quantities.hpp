@@ -3,8 +3,8 @@
 // accepted state of a dynamic step (summary_series.hpp).
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/output/result_frame.hpp"
+#include "apps/problem/case.hpp"
 
 namespace flexmoor::app {
 
