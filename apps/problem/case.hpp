@@ -44,6 +44,9 @@ struct Case {
   std::shared_ptr<const hydro::Sea> sea;
   std::optional<SeaOrigin> sea_origin;              // with the sea
   std::shared_ptr<const hydro::Bathymetry> seabed;  // the bed under the water; null for none
+  // The seabed's contact with the lines: the index in model->lineLoads() of the one load through
+  // which the bed carries the elements of every line; none without seabed contact.
+  std::optional<size_t> seabed_contact;
   // The rigid bodies in prescribed motion by name (`histories:` of type rigid_motion, a spread
   // mooring's `platform`): the points they carry follow them, and a host program may drive them
   // (RigidBodyMotion::drive).
