@@ -68,6 +68,15 @@ struct PendingCable {
   std::string segment_of;  // the multi-segment line it is a segment of, "" for none
 };
 
+// The mass of one item of `bodies:` (its mass: or weight:, read_hydro.cpp): a point_mass element
+// at its node, added to the model after the ocean sections are read.
+struct PendingPointMass {
+  int node = -1;
+  double mass = 0.0;
+  int line = 0;
+  std::string where;  // "bodies[2]"
+};
+
 // A line's `initial_shape: catenary` (read_initial_shape.cpp): its nodes start on the elastic
 // catenary between where its supports put its ends (build_initial_shape.cpp).
 struct InitialShapeSpec {
@@ -127,6 +136,7 @@ struct CaseBuilder {
   std::unordered_map<long long, int> support_line;
   bool gravity_given = false;                    // `loads: gravity` (the water takes its magnitude)
   HydroSpec hydro;                               // the ocean sections (read_hydro.cpp)
+  std::vector<PendingPointMass> body_masses;     // of the bodies that give one (read_hydro.cpp)
   std::vector<InitialShapeSpec> initial_shapes;  // of the lines that give one
   std::vector<EnclosedFluidSpec> enclosed_fluids;  // read with loads: (read_enclosed_fluid.cpp)
 
@@ -165,7 +175,7 @@ void readHistories(CaseBuilder& b, const YAML::Node& n);  // read_histories.cpp
 void readSupports(CaseBuilder& b, const YAML::Node& n);
 void readLoads(CaseBuilder& b, const YAML::Node& n);
 // water:, waves:, current:, seabed: and bodies: of the top-level map, into b.hydro; a body's mass
-// becomes a point_mass element. Also refuses a section's hydro: without water.
+// into b.body_masses. Also refuses a section's hydro: without water.
 void readOcean(CaseBuilder& b, const Fields& top);
 // One item of `loads: enclosed_fluid:`, and the liquids of them all put on the model (their
 // pressure and lumped mass, libhydro/loads/enclosed_fluid.hpp) after readOcean
