@@ -1,8 +1,11 @@
 #pragma once
 // The state of one case file being read, shared by the readers of its sections (one file each:
 // read_materials.cpp, read_mesh.cpp, read_surfaces.cpp, node_refs.cpp, read_histories.cpp,
-// read_conditions.cpp, read_hydro.cpp, read_steps.cpp, read_summary.cpp). A name defined with errors is remembered as broken, so that what refers to
-// it is not reported again.
+// read_conditions.cpp, read_enclosed_fluid.cpp, read_hydro.cpp, read_steps.cpp, read_summary.cpp,
+// read_output.cpp, read_figure.cpp): the Case they fill (apps/problem/case.hpp) and what they
+// read but the model takes later (the lines' cables, the surfaces' elements, the bodies' masses).
+// A name defined with errors is remembered as broken, so that what refers to it is not reported
+// again.
 #include <functional>
 #include <map>
 #include <memory>
