@@ -126,6 +126,7 @@ void buildOcean(CaseBuilder& b) {
       length += (b.model.reference().col(nodes[i]) - b.model.reference().col(nodes[i - 1])).norm();
     node_lengths[e] = length / static_cast<double>(nodes.size() - 1);
   }
+  b.c.seabed_contact = b.model.lineLoads().size();
   b.model.addLineLoad(std::make_shared<hydro::SeabedLineLoad>(h.bed, h.contact, std::move(widths),
                                                               std::move(node_lengths)));
   // Bodies touch the bed with their projected area from their lowest point: a sphere's disc

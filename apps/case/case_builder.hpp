@@ -1,8 +1,11 @@
 #pragma once
 // The state of one case file being read, shared by the readers of its sections (one file each:
 // read_materials.cpp, read_mesh.cpp, read_surfaces.cpp, node_refs.cpp, read_histories.cpp,
-// read_conditions.cpp, read_hydro.cpp, read_steps.cpp, read_summary.cpp). A name defined with errors is remembered as broken, so that what refers to
-// it is not reported again.
+// read_conditions.cpp, read_enclosed_fluid.cpp, read_hydro.cpp, read_steps.cpp, read_summary.cpp,
+// read_output.cpp, read_figure.cpp): the Case they fill (apps/problem/case.hpp) and what they
+// read but the model takes later (the lines' cables, the surfaces' elements, the bodies' masses).
+// A name defined with errors is remembered as broken, so that what refers to it is not reported
+// again.
 #include <functional>
 #include <map>
 #include <memory>
@@ -12,10 +15,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/case/hydro_spec.hpp"
 #include "apps/case/node_table.hpp"
 #include "apps/case/yaml_input.hpp"
+#include "apps/problem/case.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/membrane_element.hpp"
 
@@ -66,6 +69,15 @@ struct PendingCable {
   std::string where;       // "lines[2]"
   std::string name;        // the line's name, "" for none
   std::string segment_of;  // the multi-segment line it is a segment of, "" for none
+};
+
+// The mass of one item of `bodies:` (its mass: or weight:, read_hydro.cpp): a point_mass element
+// at its node, added to the model after the ocean sections are read.
+struct PendingPointMass {
+  int node = -1;
+  double mass = 0.0;
+  int line = 0;
+  std::string where;  // "bodies[2]"
 };
 
 // A line's `initial_shape: catenary` (read_initial_shape.cpp): its nodes start on the elastic
@@ -127,6 +139,7 @@ struct CaseBuilder {
   std::unordered_map<long long, int> support_line;
   bool gravity_given = false;                    // `loads: gravity` (the water takes its magnitude)
   HydroSpec hydro;                               // the ocean sections (read_hydro.cpp)
+  std::vector<PendingPointMass> body_masses;     // of the bodies that give one (read_hydro.cpp)
   std::vector<InitialShapeSpec> initial_shapes;  // of the lines that give one
   std::vector<EnclosedFluidSpec> enclosed_fluids;  // read with loads: (read_enclosed_fluid.cpp)
 
@@ -165,7 +178,7 @@ void readHistories(CaseBuilder& b, const YAML::Node& n);  // read_histories.cpp
 void readSupports(CaseBuilder& b, const YAML::Node& n);
 void readLoads(CaseBuilder& b, const YAML::Node& n);
 // water:, waves:, current:, seabed: and bodies: of the top-level map, into b.hydro; a body's mass
-// becomes a point_mass element. Also refuses a section's hydro: without water.
+// into b.body_masses. Also refuses a section's hydro: without water.
 void readOcean(CaseBuilder& b, const Fields& top);
 // One item of `loads: enclosed_fluid:`, and the liquids of them all put on the model (their
 // pressure and lumped mass, libhydro/loads/enclosed_fluid.hpp) after readOcean

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
 #include "apps/case/case_builder.hpp"
@@ -10,6 +11,7 @@
 #include "apps/case/nearest_names.hpp"
 #include "apps/case/scenario.hpp"
 #include "apps/case/yaml_load.hpp"
+#include "libstruct/element/spring_element.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -47,6 +49,16 @@ std::vector<fs::path> caseFiles() {
     return a.stem().string() < b.stem().string();
   });
   return files;
+}
+
+// The bodies' masses as point_mass elements, numbered after those of elements:, lines: and
+// surfaces:.
+void addBodyMasses(CaseBuilder& b) {
+  for (const PendingPointMass& m : b.body_masses) {
+    b.model.addElement(std::make_unique<element::PointMassElement>(m.node, m.mass));
+    b.element_types.push_back("point_mass");
+    b.element_origin.push_back({m.line, m.where, ""});
+  }
 }
 
 // The entries of `series`, read with their own file's diagnostics.
@@ -111,6 +123,7 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   readSupports(b, section("supports"));
   readLoads(b, section("loads"));
   readOcean(b, top);
+  addBodyMasses(b);
   addEnclosedFluids(b);
   if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
   readSummary(b, section("summary"));

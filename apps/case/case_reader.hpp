@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/case/diagnostics.hpp"
 #include "apps/case/node_table.hpp"
+#include "apps/problem/case.hpp"
 
 namespace flexmoor::app {
 

@@ -1,5 +1,6 @@
 // The ocean sections of a case file: water:, waves:, current:, seabed:, bodies: and a section's
 // hydro: (hydro_spec.hpp). Parsing and validation only; build_hydro.cpp makes the sea and loads.
+#include <algorithm>
 #include <cmath>
 
 #include "apps/case/case_builder.hpp"
@@ -8,7 +9,6 @@
 #include "apps/case/read_sea.hpp"
 #include "apps/case/read_seabed_friction.hpp"
 #include "libhydro/waves/dispersion.hpp"
-#include "libstruct/element/spring_element.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -275,12 +275,13 @@ std::optional<double> bodyMass(CaseBuilder& b, Fields& f, double g) {
   return weight ? std::optional<double>(*weight / g) : std::nullopt;
 }
 
-// Whether an explicit point_mass element sits at `node`.
+// Whether a point mass sits at `node` already: an explicit point_mass element or a body's mass.
 bool hasPointMass(const CaseBuilder& b, int node) {
   for (int e = 0; e < b.model.elementCount(); ++e)
     if (b.element_types[e] == "point_mass" && b.model.element(e).nodes().front() == node)
       return true;
-  return false;
+  return std::any_of(b.body_masses.begin(), b.body_masses.end(),
+                     [node](const PendingPointMass& m) { return m.node == node; });
 }
 
 // {node, type: sphere, diameter, Cd, [Ca: 0.5]} or {node, [type: point], volume,
@@ -320,10 +321,7 @@ void readBody(CaseBuilder& b, const YAML::Node& item, const std::string& path, H
     return;
   }
   h.bodies.push_back({node, *body, lineOf(item), path});
-  if (*mass == 0.0) return;
-  b.model.addElement(std::make_unique<element::PointMassElement>(node, *mass));
-  b.element_types.push_back("point_mass");
-  b.element_origin.push_back({lineOf(item), path, ""});
+  if (*mass > 0.0) b.body_masses.push_back({node, *mass, lineOf(item), path});
 }
 
 // What needs water, refused without it: "waves: needs water: (...)".

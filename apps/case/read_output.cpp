@@ -1,4 +1,5 @@
-// output: of a case file: what the records of the run's netCDF file hold (output_fields.hpp).
+// output: of a case file: what the records of the run's netCDF file hold
+// (apps/problem/output_fields.hpp).
 //   output:
 //     fields: [position, tension]     # default: every field
 #include <algorithm>

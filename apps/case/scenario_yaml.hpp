@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/case/diagnostics.hpp"
 #include "apps/case/yaml_input.hpp"
+#include "apps/problem/case.hpp"
 
 namespace flexmoor::app {
 

@@ -206,22 +206,11 @@ std::string trim(const std::string& s) {
 
 }  // namespace
 
-UnitNames unitNames(UnitSystem system) {
-  if (system == UnitSystem::US) return {"ft", "slug", "s", "lbf", "lbf/ft^2"};
-  return {"m", "kg", "s", "N", "Pa"};
-}
-
 Unit parseUnit(const std::string& expression) { return UnitParser(expression).parse(); }
 
 double systemScale(Dimension d, UnitSystem system) {
   if (system == UnitSystem::SI) return 1.0;
   return std::pow(kSlug, d.mass) * std::pow(kFoot, d.length);  // US: slug, ft, s
-}
-
-std::string unitSystemName(UnitSystem system) {
-  const UnitNames u = unitNames(system);
-  return std::string(system == UnitSystem::US ? "US" : "SI") + " (" + u.length + ", " + u.mass +
-         ", " + u.time + ", " + u.force + ")";
 }
 
 std::string systemUnits(Dimension d, UnitSystem system) {

@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "apps/case/case.hpp"
+#include "apps/problem/unit_system.hpp"
 
 namespace flexmoor::app {
 
@@ -88,9 +88,6 @@ double parseValue(const std::string& text, const QuantityKind& expected, UnitSys
 
 // "a length", "a pressure" when the dimension is one of the named kinds, else "kg^a m^b s^c".
 std::string describeDimension(Dimension dimension);
-
-// "US (ft, slug, s, lbf)" or "SI (m, kg, s, N)": what the results' unit_system attribute says.
-std::string unitSystemName(UnitSystem system);
 
 // CF (udunits) units of `dimension` in the case system: SI "m", "s", "N", "Pa", "kg m-3",
 // "m s-1"; US "ft", "s", "lbf", "lbf ft-2", "slug ft-3", "ft s-1" (a force times lengths as lbf,

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/case.hpp"
+#include "apps/problem/case.hpp"
 #include "libstruct/model/assembler.hpp"
 #include "libstruct/model/coupled_motion.hpp"
 

@@ -6,9 +6,9 @@
 #include <tuple>
 
 #include "apps/case/diagnostics.hpp"
-#include "apps/case/units.hpp"
 #include "apps/output/finite_value.hpp"
 #include "apps/output/membrane_resultants.hpp"
+#include "apps/problem/unit_system.hpp"
 #include "libhydro/seabed/bathymetry.hpp"
 #include "libhydro/waves/sea.hpp"
 

@@ -44,7 +44,7 @@
 // segments are named in the case file only.
 //
 // Per record, of the fields the case's `output: fields:` lists (all by default;
-// apps/case/output_fields.hpp): wave_elevation (time) at x = y = 0 when the case has a sea,
+// apps/problem/output_fields.hpp): wave_elevation (time) at x = y = 0 when the case has a sea,
 // displacement_/position_/velocity_/reaction_x/_y/_z (record, node), tension_end (record,
 // element, end; _FillValue for elements without an axial force), tension_point (record, point),
 // membrane_resultant_max/_min (record, element; _FillValue off membranes); angular_frequency
@@ -67,10 +67,10 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/output/netcdf_file.hpp"
 #include "apps/output/result_frame.hpp"
 #include "apps/output/result_sink.hpp"
+#include "apps/problem/case.hpp"
 
 namespace flexmoor::app {
 

@@ -9,7 +9,6 @@
 #include <utility>
 
 #include "apps/output/membrane_resultants.hpp"
-#include "libhydro/seabed/seabed_line_load.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -62,19 +61,17 @@ std::pair<double, double> principalResultants(const SummarySpec& spec, const mod
 // gives its laid length L_B; a fully suspended line 0. Each element counts over its own weight
 // per length (the segments of a multi-segment line differ). In a static equilibrium under weight,
 // buoyancy and the bed alone it equals L - V_F / w, with V_F the fairlead's vertical force.
-double lengthOnSeabed(const SummarySpec& spec, const model::Model& model,
-                      const SummarySource& source) {
-  const model::LineLoad* bed = nullptr;
-  for (const auto& load : model.lineLoads())
-    if (dynamic_cast<const hydro::SeabedLineLoad*>(load.get())) bed = load.get();
-  if (!bed)
+double lengthOnSeabed(const SummarySpec& spec, const Case& c, const SummarySource& source) {
+  const model::Model& model = *c.model;
+  if (!c.seabed_contact)
     throw std::out_of_range("summary \"" + spec.name + "\": the model has no seabed contact");
+  const model::LineLoad& bed = *model.lineLoads().at(*c.seabed_contact);
   double length = 0.0;  // each element's carried weight over its weight per length
   Eigen::VectorXd p;
   for (size_t i = 0; i < spec.elements.size(); ++i) {
     const int e = spec.elements[i];
     requireIndex(e, model.elementCount(), spec, "element");
-    model.element(e).lineLoad({model.reference(), source.state(), e}, *bed, p, nullptr);
+    model.element(e).lineLoad({model.reference(), source.state(), e}, bed, p, nullptr);
     double carried = 0.0;
     for (Eigen::Index a = 2; a < p.size(); a += 3) carried += p(a);
     length += carried / spec.element_weights.at(i);
@@ -99,8 +96,9 @@ class FrameSource : public SummarySource {
   const ResultFrame& frame_;
 };
 
-double unscaled(const SummarySpec& spec, const model::Model& model, const SummarySource& source) {
+double unscaled(const SummarySpec& spec, const Case& c, const SummarySource& source) {
   using Q = SummarySpec::Quantity;
+  const model::Model& model = *c.model;
   const int n = spec.node, k = spec.component;
   switch (spec.quantity) {
     case Q::Displacement:
@@ -125,7 +123,7 @@ double unscaled(const SummarySpec& spec, const model::Model& model, const Summar
       requireIndex(n, model.nodeCount(), spec, "node");
       return source.reactions().col(n).head<2>().norm();
     case Q::LengthOnSeabed:
-      return lengthOnSeabed(spec, model, source);
+      return lengthOnSeabed(spec, c, source);
     case Q::EndTension:
       requireIndex(spec.end, 2, spec, "end");
       return elementResult(spec, model, source).end_tension[spec.end];
@@ -150,14 +148,12 @@ double unscaled(const SummarySpec& spec, const model::Model& model, const Summar
 
 }  // namespace
 
-double evaluateSummary(const SummarySpec& spec, const model::Model& model,
-                       const SummarySource& source) {
-  return spec.scale * unscaled(spec, model, source);
+double evaluateSummary(const SummarySpec& spec, const Case& c, const SummarySource& source) {
+  return spec.scale * unscaled(spec, c, source);
 }
 
-double evaluateSummary(const SummarySpec& spec, const model::Model& model,
-                       const ResultFrame& frame) {
-  return evaluateSummary(spec, model, FrameSource(frame));
+double evaluateSummary(const SummarySpec& spec, const Case& c, const ResultFrame& frame) {
+  return evaluateSummary(spec, c, FrameSource(frame));
 }
 
 }  // namespace flexmoor::app

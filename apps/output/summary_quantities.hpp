@@ -3,8 +3,8 @@
 // accepted state of a dynamic step (summary_series.hpp).
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/output/result_frame.hpp"
+#include "apps/problem/case.hpp"
 
 namespace flexmoor::app {
 
@@ -24,11 +24,10 @@ class SummarySource {
 // Displacement, position (reference + displacement), velocity, speed |u'|, reaction component,
 // reaction magnitude, horizontal reaction, length of a line on the seabed, end tension or the largest end tension over all elements, membrane
 // resultants, mode frequency; times spec.scale. spec.reduction is not looked at: this is the
-// value in one state. Throws std::out_of_range when the spec names a node, element, end,
-// component or mode the model or source does not have.
-double evaluateSummary(const SummarySpec& spec, const model::Model& model,
-                       const SummarySource& source);
-double evaluateSummary(const SummarySpec& spec, const model::Model& model,
-                       const ResultFrame& frame);
+// value in one state of the case's model (a length on the seabed through the case's
+// seabed_contact). Throws std::out_of_range when the spec names a node, element, end, component
+// or mode the model or source does not have, or a length on the seabed without seabed contact.
+double evaluateSummary(const SummarySpec& spec, const Case& c, const SummarySource& source);
+double evaluateSummary(const SummarySpec& spec, const Case& c, const ResultFrame& frame);
 
 }  // namespace flexmoor::app

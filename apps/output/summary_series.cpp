@@ -136,7 +136,7 @@ void SummarySeries::sample(const model::State& s) {
   if (specs_.empty()) return;
   const StateSource source(assembler_, s);
   for (size_t k = 0; k < specs_.size(); ++k)
-    reductions_[k].add(s.time, evaluateSummary(c_.summary[specs_[k]], *c_.model, source));
+    reductions_[k].add(s.time, evaluateSummary(c_.summary[specs_[k]], c_, source));
 }
 
 std::vector<double> SummarySeries::progress() const {

@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "apps/case/case.hpp"
+#include "apps/problem/case.hpp"
 #include "libstruct/model/assembler.hpp"
 
 namespace flexmoor::app {

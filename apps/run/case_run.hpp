@@ -10,10 +10,10 @@
 #include <optional>
 #include <string>
 
-#include "apps/case/case.hpp"
 #include "apps/output/background_sink.hpp"
 #include "apps/output/netcdf_writer.hpp"
 #include "apps/output/output_lock.hpp"
+#include "apps/problem/case.hpp"
 #include "apps/run/case_outputs.hpp"
 #include "apps/run/run_case.hpp"
 #include "apps/run/simulation.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/case.hpp"
+#include "apps/problem/case.hpp"
 
 namespace flexmoor::app {
 

@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/output/state_observer.hpp"
+#include "apps/problem/case.hpp"
 
 namespace flexmoor::app {
 

@@ -432,7 +432,7 @@ std::vector<std::pair<std::string, double>> Simulation::evaluate(
     const int step = spec.step < 0 ? static_cast<int>(c_.steps.size()) - 1 : spec.step;
     if (step >= static_cast<int>(frames.size())) continue;  // that step never finished
     if (spec.reduction == SummarySpec::Reduction::StepEnd) {
-      values.emplace_back(spec.name, evaluateSummary(spec, *c_.model, frames[step]));
+      values.emplace_back(spec.name, evaluateSummary(spec, c_, frames[step]));
     } else if (const auto v = over_time_.find(static_cast<int>(k)); v != over_time_.end()) {
       values.emplace_back(spec.name, v->second);
     } else {

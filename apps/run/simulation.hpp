@@ -12,10 +12,10 @@
 #include <utility>
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/output/result_frame.hpp"
 #include "apps/output/result_sink.hpp"
 #include "apps/output/state_observer.hpp"
+#include "apps/problem/case.hpp"
 #include "apps/run/held_records.hpp"
 #include "apps/run/run_case.hpp"
 #include "libstruct/model/assembler.hpp"

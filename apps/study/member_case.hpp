@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/case/case_reader.hpp"
+#include "apps/problem/case.hpp"
 #include "apps/study/study.hpp"
 
 namespace flexmoor::app {

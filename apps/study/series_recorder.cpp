@@ -33,7 +33,7 @@ void SeriesRecorder::accepted(int step, const model::State& s, const model::Asse
   time_.push_back(s.time);
   for (size_t k = 0; k < specs_.size(); ++k)
     values_[k].push_back(within(s.time, specs_[k].from, specs_[k].to)
-                             ? evaluateSummary(specs_[k], *c_.model, source)
+                             ? evaluateSummary(specs_[k], c_, source)
                              : std::numeric_limits<double>::quiet_NaN());
 }
 

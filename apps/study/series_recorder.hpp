@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/case.hpp"
 #include "apps/output/state_observer.hpp"
+#include "apps/problem/case.hpp"
 
 namespace flexmoor::app {
 

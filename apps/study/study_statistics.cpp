@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "apps/case/case.hpp"
 #include "apps/output/summary_series.hpp"
+#include "apps/problem/case.hpp"
 
 namespace flexmoor::app {
 namespace {

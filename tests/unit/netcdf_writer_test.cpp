@@ -192,7 +192,7 @@ TEST_F(NetcdfWriterTest, EachRecordIsReadableFromDiskOnceFlushed) {
   EXPECT_EQ(nc.doubles("tension_point"), (std::vector<double>{10.0, 11.0, 12.0, 11.0, 12.0, 13.0}));
 }
 
-// `output: fields:` (apps/case/output_fields.hpp): the records hold the fields listed and no
+// `output: fields:` (apps/problem/output_fields.hpp): the records hold the fields listed and no
 // others, the listed ones with the values of a full file (exactly: the same doubles copied), and
 // a frame without element results or reactions is written when none of those is listed.
 TEST_F(NetcdfWriterTest, OnlyTheListedFieldsAreWritten) {

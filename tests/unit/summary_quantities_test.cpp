@@ -13,11 +13,13 @@ namespace {
 
 // Two nodes (0,0,0) and (10,0,0) joined by a spring; node 0 displaced and node 1 supported.
 struct Fixture {
-  model::Model model;
+  Case c;
   model::State state{2};
   ResultFrame frame;
 
   Fixture() {
+    c.model = std::make_unique<model::Model>();
+    model::Model& model = *c.model;
     model.addNode(Eigen::Vector3d(0.0, 0.0, 0.0));
     model.addNode(Eigen::Vector3d(10.0, 0.0, 0.0));
     model.addElement(
@@ -41,7 +43,7 @@ struct Fixture {
     spec.element = 0;
     spec.end = 1;
     spec.scale = scale;
-    return evaluateSummary(spec, model, frame);
+    return evaluateSummary(spec, c, frame);
   }
 };
 
