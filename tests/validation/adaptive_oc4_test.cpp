@@ -85,6 +85,19 @@ class AdaptiveStepsOc4 : public ::testing::Test {
     ASSERT_EQ(run.exit_code, app::kSuccess) << run.log;
   }
 
+  // The adaptive run with `keys` within `tolerance` of the reference, in at most `cost` times
+  // the shipped step's Newton iterations.
+  static void expectAdaptive(const std::string& name, const std::string& keys, double tolerance,
+                             double cost) {
+    const InProcessRun run = adaptive(name, keys);
+    expectRan(run);
+    const double worst = worstDifference(run);
+    RecordProperty("worst_relative_difference", std::to_string(worst));
+    EXPECT_LE(worst, tolerance);
+    EXPECT_LE(logged(run.log, "Newton iterations"),
+              cost * logged(shipped_->log, "Newton iterations"));
+  }
+
   static InProcessRun* reference_;
   static InProcessRun* shipped_;
 };
@@ -93,22 +106,11 @@ InProcessRun* AdaptiveStepsOc4::reference_ = nullptr;
 InProcessRun* AdaptiveStepsOc4::shipped_ = nullptr;
 
 TEST_F(AdaptiveStepsOc4, DefaultToleranceReachesTheConvergedExtremesAtNoMoreIterations) {
-  const InProcessRun run = adaptive("oc4-adaptive", "");
-  expectRan(run);
-  const double worst = worstDifference(run);
-  RecordProperty("worst_relative_difference", std::to_string(worst));
-  EXPECT_LE(worst, 5e-4);
-  EXPECT_LE(logged(run.log, "Newton iterations"), logged(shipped_->log, "Newton iterations"));
+  expectAdaptive("oc4-adaptive", "", 5e-4, 1.0);
 }
 
 TEST_F(AdaptiveStepsOc4, LooserToleranceStaysWithinTheRequirementAtLessThanHalfTheCost) {
-  const InProcessRun run = adaptive("oc4-adaptive-0.05", " step_tolerance: 0.05,");
-  expectRan(run);
-  const double worst = worstDifference(run);
-  RecordProperty("worst_relative_difference", std::to_string(worst));
-  EXPECT_LE(worst, 2e-3);
-  EXPECT_LE(logged(run.log, "Newton iterations"),
-            0.45 * logged(shipped_->log, "Newton iterations"));
+  expectAdaptive("oc4-adaptive-0.05", " step_tolerance: 0.05,", 2e-3, 0.45);
 }
 
 TEST_F(AdaptiveStepsOc4, LinesLandingOnTheSeabedWithinAStepCostFewBacktracks) {
