@@ -1,6 +1,7 @@
 #include "libhydro/seabed/seabed_contact.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "libhydro/seabed/seabed_friction.hpp"
 
@@ -41,7 +42,16 @@ SeabedPointLoad seabedLoadAt(const Bathymetry& bathymetry, const SeabedPropertie
                              const Eigen::Vector3d& u_dot, double node_length) {
   const double x = contact.x(), y = contact.y();
   const Eigen::Vector3d n = bathymetry.normal(x, y);
-  const double delta = n.z() * (bathymetry.height(x, y) - contact.z());
+  const double height = bathymetry.height(x, y);
+  double delta = n.z() * (height - contact.z());
+  // A point on the bed to round-off is on it: an integration point of a line laid exactly on the
+  // bed (a catenary start) is interpolated from its nodes' heights, sum N_i z_i, within a few
+  // eps |z| of the bed, above or below it by chance; above it, the point would have no contact
+  // stiffness, and a node whose points all fell there had none in the first Newton solve (a
+  // fully laid chain's node driven 70 km down).
+  const double roundoff = 64.0 * std::numeric_limits<double>::epsilon() *
+                          (std::abs(height) + std::abs(contact.z()));
+  if (delta < 0.0 && delta >= -roundoff) delta = 0.0;
   return seabedLoad(bed, delta, n, width, u_dot, node_length);
 }
 

@@ -40,6 +40,25 @@ TEST(SeabedContact, LineExactlyOnTheBedHasTheContactStiffness) {
   EXPECT_NEAR(on.d_position(2, 2), -bed.stiffness * d, 1e-9 * bed.stiffness * d);
 }
 
+// An integration point of a line laid on the bed is interpolated from its nodes' heights, so it
+// lies within round-off of the bed, above or below it by chance: 2 ulp above a bed at -200 m it
+// is in contact (the stiffness, no force); 1e-9 m above it is not.
+TEST(SeabedContact, PointOnTheBedToRoundOffIsInContact) {
+  SeabedProperties bed;
+  const double d = 0.25, z = -200.0;
+  const Bathymetry flat = Bathymetry::flat(-z);  // the bed at z
+  const double above = std::nextafter(std::nextafter(z, 0.0), 0.0);
+  const SeabedPointLoad on =
+      seabedLoadAt(flat, bed, Vector3d(10.0, 0.0, above), d, Vector3d::Zero());
+  EXPECT_TRUE(on.contact);
+  EXPECT_EQ(on.force.norm(), 0.0);
+  EXPECT_NEAR(on.d_position(2, 2), -bed.stiffness * d, 1e-9 * bed.stiffness * d);
+  const SeabedPointLoad off =
+      seabedLoadAt(flat, bed, Vector3d(10.0, 0.0, z + 1e-9), d, Vector3d::Zero());
+  EXPECT_FALSE(off.contact);
+  EXPECT_EQ(off.d_position.norm(), 0.0);
+}
+
 // Sliding at U >> v_s the friction is mu N against the motion, to (v_s / U)^2 / 2; at rest it is
 // zero; a vertical velocity feels the bed's damping c_b d, not friction.
 TEST(SeabedContact, SlidingLineIsResistedByMuTimesTheContactForce) {
