@@ -9,7 +9,7 @@
 #include "apps/case/case_builder.hpp"
 #include "apps/case/data_dir.hpp"
 #include "apps/case/nearest_names.hpp"
-#include "apps/case/scenario.hpp"
+#include "apps/case/scenarios/scenario.hpp"
 #include "apps/case/yaml_load.hpp"
 #include "libstruct/element/spring_element.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // A prescribed motion of one degree of freedom in time: each of a platform's surge, sway, heave,
-// roll, pitch and yaw (scenario_platform.hpp, and the rigid_point histories it writes):
+// roll, pitch and yaw (scenarios/platform.hpp, and the rigid_point histories it writes):
 //
 //   {amplitude: 2 m, period: 10 s, phase: 0}        a sine A sin(2 pi t / T + phase)
 //   {table: [[0 s, 0 m], [0.5 s, 0.61 m], ...]}     samples (t, value), each a quantity

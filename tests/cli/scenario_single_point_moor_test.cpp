@@ -1,4 +1,4 @@
-// scenario: single_point_moor (apps/case/scenario_single_point_moor.cpp) stands for a model: the
+// scenario: single_point_moor (apps/case/scenarios/single_point_moor.cpp) stands for a model: the
 // dissertation's Example 8 by scenario (cases/seed/ex8-relaxation-test.yaml) and written out
 // element by element with the numbers the scenario derives (tests/cases/ex8-explicit.yaml) give
 // the same summary. Reference: the explicit model; tolerance 1e-12 relative (the same model; only

@@ -1,4 +1,4 @@
-// scenario: submerged_tube (apps/case/scenario_submerged_tube.cpp) against Example 9 written out
+// scenario: submerged_tube (apps/case/scenarios/submerged_tube.cpp) against Example 9 written out
 // (cases/seed/ex9-submerged-tube.yaml): tests/cases/ex9-scenario.yaml states the same model in
 // the scenario's keys. Reference: the explicit case's summary; tolerance 1e-10 relative (the
 // explicit file gives the attachment and anchor positions to 12 digits: measured 3.6e-11).

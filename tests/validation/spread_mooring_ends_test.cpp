@@ -1,5 +1,5 @@
 // The default summary of scenario: spread_mooring at each end of a line, with the ends and signs
-// the scenario states (apps/case/scenario_spread_mooring.cpp, README): fairlead_horizontal_k and
+// the scenario states (apps/case/scenarios/spread_mooring.cpp, README): fairlead_horizontal_k and
 // fairlead_vertical_k are the fairlead support's reaction on the line (the upward pull that holds
 // it: V_F > 0), anchor_horizontal_k and anchor_vertical_k the line's pull on the anchor (upward
 // +: an uplift), the tensions the end elements' forces at those ends. A taut wire, fully

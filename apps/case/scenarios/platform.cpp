@@ -1,7 +1,7 @@
-#include "apps/case/scenario_platform.hpp"
+#include "apps/case/scenarios/platform.hpp"
 
 #include "apps/case/read_motion.hpp"
-#include "apps/case/scenario_yaml.hpp"
+#include "apps/case/scenarios/yaml_text.hpp"
 #include "apps/case/units.hpp"
 
 namespace flexmoor::app {

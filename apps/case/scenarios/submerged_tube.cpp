@@ -25,8 +25,8 @@
 // the ring y = 0) by position.
 #include <cmath>
 
-#include "apps/case/scenario.hpp"
-#include "apps/case/scenario_yaml.hpp"
+#include "apps/case/scenarios/scenario.hpp"
+#include "apps/case/scenarios/yaml_text.hpp"
 #include "apps/case/units.hpp"
 #include "apps/case/yaml_input.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The line types and mooring lines of scenario: spread_mooring (scenario_spread_mooring.cpp) as
+// The line types and mooring lines of scenario: spread_mooring (spread_mooring.cpp) as
 // read, and whether each can start on its catenary: parsing and the catenary check only.
 //
 //   line_types: {NAME: {diameter, mass_per_length, EA, weight_in_water, ...}, ...}

@@ -1,4 +1,4 @@
-#include "apps/case/scenario_yaml.hpp"
+#include "apps/case/scenarios/yaml_text.hpp"
 
 #include <sstream>
 

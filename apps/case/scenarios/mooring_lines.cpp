@@ -1,4 +1,4 @@
-#include "apps/case/scenario_mooring_lines.hpp"
+#include "apps/case/scenarios/mooring_lines.hpp"
 
 #include <cmath>
 

@@ -21,14 +21,14 @@
 //                   elements: 10}, {type: chain, length: 135 m, elements: 4, order: 4}],
 //        attachments: [{at: 1, mass: 5000 kg, volume: 2 m^3, drag_area: 1 m^2, Ca: 0.5}]}
 //   platform: {reference: [x, y, z], surge: {amplitude, period, phase}, sway, heave, roll,
-//              pitch, yaw}  # optional: the fairleads carried by it (scenario_platform.hpp);
+//              pitch, yaw}  # optional: the fairleads carried by it (platform.hpp);
 //                           # each motion a sine, {table: [[t, value], ...]} or
 //                           # {file: motion.csv, column: surge} (read_motion.hpp)
 //   statics: {...}           # keys of the static step (default: one increment)
 //   dynamic: {...}           # optional: a dynamic step after it
 //   steps:, summary:, figure:, histories:   # the case's own, instead of the scenario's
 //
-// A line of segments (scenario_mooring_lines.hpp) is the segments line_k_segment_1, ... of line
+// A line of segments (mooring_lines.hpp) is the segments line_k_segment_1, ... of line
 // line_k (`segment_of: line_k`, each starting at the end of the one before), starting on the
 // multi-segment catenary of the whole line; each attachment at connection k (between segments k
 // and k + 1, at line_k_segment_k.end) is a point_mass element of its mass (elements:, numbered
@@ -58,10 +58,10 @@
 #include <cmath>
 #include <optional>
 
-#include "apps/case/scenario.hpp"
-#include "apps/case/scenario_mooring_lines.hpp"
-#include "apps/case/scenario_platform.hpp"
-#include "apps/case/scenario_yaml.hpp"
+#include "apps/case/scenarios/scenario.hpp"
+#include "apps/case/scenarios/mooring_lines.hpp"
+#include "apps/case/scenarios/platform.hpp"
+#include "apps/case/scenarios/yaml_text.hpp"
 #include "apps/case/units.hpp"
 #include "apps/case/yaml_input.hpp"
 

@@ -1,5 +1,5 @@
 // The table of scenarios: `scenario: NAME` picks the expansion that writes the full case.
-#include "apps/case/scenario.hpp"
+#include "apps/case/scenarios/scenario.hpp"
 
 #include <string>
 
