@@ -8,13 +8,17 @@
 #include "libstruct/solve/diagnosis.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
+#include "libstruct/solve/newton.hpp"
 
 namespace flexmoor::solve {
 namespace {
 
 using Eigen::VectorXd;
 
-class ArcLengthPath {
+// One arc-length increment (Crisfield): the predictor along the tangent, then Newton's
+// corrections (newton.hpp), each the residual's solution plus the multiple of the tangent
+// solution K dut = P that keeps |du|^2 + psi^2 dlambda^2 |P|^2 = ds^2.
+class ArcLengthPath final : public NewtonProblem {
  public:
   ArcLengthPath(const model::Assembler& a, const StaticOptions& o)
       : a_(a),
@@ -26,92 +30,104 @@ class ArcLengthPath {
   // undefined and must be restored by the caller).
   bool increment(model::State& state, double& ds, int sign, const VectorXd* previous,
                  VectorXd& du_total, double& dlambda, IterationRecord& rec) {
-    const VectorXd u0 = a_.restrictToFree(asVector(state.displacement));
-    VectorXd P, dut;
-    if (!tangentSolve(state, nullptr, P, dut)) return false;
-    const double p2 = o_.arc.psi * o_.arc.psi * P.squaredNorm();
-    const double scale = std::sqrt(dut.squaredNorm() + p2);
+    state_ = &state;
+    u0_ = a_.restrictToFree(asVector(state.displacement));
+    lambda0_ = state.load_factor;
+    Residual start = staticOutOfBalance(a_, state, &K_);
+    if (!std::isfinite(start.relative()) || !tangentSolve(state)) return false;
+    const double p2 = o_.arc.psi * o_.arc.psi * P_.squaredNorm();
+    const double scale = std::sqrt(dut_.squaredNorm() + p2);
     if (ds <= 0.0) ds = std::abs(o_.load_factor - state.load_factor) / o_.increments * scale;
+    ds_ = ds;
     int direction = sign;
-    if (previous) direction = previous->dot(dut) >= 0.0 ? 1 : -1;
-    dlambda = direction * ds / scale;
-    du_total = dlambda * dut;
-    const double lambda0 = state.load_factor;
-    apply(state, u0, du_total, lambda0 + dlambda);
+    if (previous) direction = previous->dot(dut_) >= 0.0 ? 1 : -1;
+    dlambda_ = direction * ds / scale;
+    du_total_ = dlambda_ * dut_;
+    apply();
     trace_.start();
-    trace_.increment(a_.model(), du_total);
-    IterateNorms norms;
-    for (int it = 1; it <= o_.max_iterations; ++it) {
-      VectorXd R;
-      const bool solved = tangentSolve(state, &R, P, dut);
-      trace_.residual(residual_norm_);
-      if (!solved) return false;
-      rec.residual_norm = norms.residual = residual_norm_;
-      norms.residual_floor = residual_floor_;
-      if (it > 1 && converged(o_.convergence, norms)) return true;
-      const VectorXd duR = linear_.solve(R);
-      // |du_total + duR + x dut|^2 + psi^2 (dlambda + x)^2 |P|^2 = ds^2
-      const double psi2 = o_.arc.psi * o_.arc.psi * P.squaredNorm();
-      const VectorXd base = du_total + duR;
-      const double qa = dut.squaredNorm() + psi2;
-      const double qb = 2.0 * dut.dot(base) + 2.0 * psi2 * dlambda;
-      const double qc = base.squaredNorm() + psi2 * dlambda * dlambda - ds * ds;
-      const double disc = qb * qb - 4.0 * qa * qc;
-      if (disc < 0.0 || !std::isfinite(disc)) return false;
-      const double r1 = (-qb + std::sqrt(disc)) / (2.0 * qa);
-      const double r2 = (-qb - std::sqrt(disc)) / (2.0 * qa);
-      // the root that keeps the increment closest to its own direction
-      const double x = (base + r1 * dut).dot(du_total) >= (base + r2 * dut).dot(du_total) ? r1 : r2;
-      const VectorXd du = duR + x * dut;
-      trace_.increment(a_.model(), du);
-      du_total += du;
-      dlambda += x;
-      apply(state, u0, du_total, lambda0 + dlambda);
-      rec.iteration = it;
-      rec.load_factor = state.load_factor;
-      incrementNorm(a_, du, state.displacement, norms);
-      rec.displacement_norm = norms.displacement;
-    }
-    return false;
+    trace_.increment(a_.model(), du_total_);
+    NewtonSettings settings;
+    settings.max_iterations = o_.max_iterations;
+    settings.backtracking = false;
+    const NewtonOutcome out = newtonSolve(*this, settings, a_.model(), trace_, rec);
+    rec.load_factor = state.load_factor;
+    du_total = du_total_;
+    dlambda = dlambda_;
+    return out.converged();
+  }
+
+  void evaluate(int, VectorXd& R, IterateNorms& norms) override {
+    Residual r = staticOutOfBalance(a_, *state_, &K_);
+    norms.residual = r.relative();
+    norms.residual_floor = r.floor;
+    R.swap(r.free);
+  }
+  bool accepts(const IterateNorms& norms) const override {
+    return converged(o_.convergence, norms);
+  }
+  bool increment(int, const VectorXd& R, VectorXd& du) override {
+    if (!tangentSolve(*state_)) return false;
+    const VectorXd duR = linear_.solve(R);
+    // |du_total + duR + x dut|^2 + psi^2 (dlambda + x)^2 |P|^2 = ds^2
+    const double psi2 = o_.arc.psi * o_.arc.psi * P_.squaredNorm();
+    const VectorXd base = du_total_ + duR;
+    const double qa = dut_.squaredNorm() + psi2;
+    const double qb = 2.0 * dut_.dot(base) + 2.0 * psi2 * dlambda_;
+    const double qc = base.squaredNorm() + psi2 * dlambda_ * dlambda_ - ds_ * ds_;
+    const double disc = qb * qb - 4.0 * qa * qc;
+    if (disc < 0.0 || !std::isfinite(disc)) return false;
+    const double r1 = (-qb + std::sqrt(disc)) / (2.0 * qa);
+    const double r2 = (-qb - std::sqrt(disc)) / (2.0 * qa);
+    // the root that keeps the increment closest to its own direction
+    x_ = (base + r1 * dut_).dot(du_total_) >= (base + r2 * dut_).dot(du_total_) ? r1 : r2;
+    du = duR + x_ * dut_;
+    return true;
+  }
+  void add(const VectorXd& du, double scale) override {
+    du_total_ += scale * du;
+    dlambda_ += scale * x_;
+    apply();
+  }
+  void measure(const VectorXd& du, IterateNorms& norms) const override {
+    incrementNorm(a_, du, state_->displacement, norms);
   }
 
   const NewtonTrace& trace() const { return trace_; }
 
  private:
-  // Factorises the tangent at `state` and solves K dut = P (the reference load at factor 1);
-  // with R given, also returns the residual.
-  bool tangentSolve(const model::State& state, VectorXd* R, VectorXd& P, VectorXd& dut) {
-    model::SparseMatrix K;
-    const Residual r = staticOutOfBalance(a_, state, &K);
-    residual_norm_ = r.relative();
-    residual_floor_ = r.floor;
-    if (!std::isfinite(residual_norm_)) return false;
-    if (R) *R = r.free;
+  // Factorises the tangent K_ (of the last evaluation at `state`) and solves K dut = P, the
+  // reference load at factor 1.
+  bool tangentSolve(const model::State& state) {
     model::State unit = state;
     unit.load_factor = 1.0;
     VectorXd full;
     a_.externalLoad(unit, full);
-    P = a_.restrictToFree(full);
-    if (o_.pressure_load_stiffness) a_.subtractLoadStiffness(state, K);
-    if (!linear_.factorize(K)) return false;
-    dut = linear_.solve(P);
-    return dut.allFinite();
+    P_ = a_.restrictToFree(full);
+    if (o_.pressure_load_stiffness) a_.subtractLoadStiffness(state, K_);
+    if (!linear_.factorize(K_)) return false;
+    dut_ = linear_.solve(P_);
+    return dut_.allFinite();
   }
 
-  void apply(model::State& state, const VectorXd& u0, const VectorXd& du, double lambda) const {
-    VectorXd u = u0 + du;
+  // The iterate: u0 + du_total at load factor lambda0 + dlambda.
+  void apply() {
+    const VectorXd u = u0_ + du_total_;
     for (int n = 0; n < a_.model().nodeCount(); ++n)
       for (int k = 0; k < 3; ++k)
-        if (const int eq = a_.model().equation(n, k); eq >= 0) state.displacement(k, n) = u(eq);
-    state.load_factor = lambda;
+        if (const int eq = a_.model().equation(n, k); eq >= 0) state_->displacement(k, n) = u(eq);
+    state_->load_factor = lambda0_ + dlambda_;
   }
 
   const model::Assembler& a_;
   const StaticOptions& o_;
   LinearSolver linear_;
-  double residual_norm_ = 0.0;
-  double residual_floor_ = 0.0;  // round-off floor at the last tangent (Residual::floor)
-  NewtonTrace trace_;            // of the last increment tried
+  model::SparseMatrix K_;
+  VectorXd P_, dut_;   // the reference load and the tangent's solution for it
+  NewtonTrace trace_;  // of the last increment tried
+  // The increment under way: its start, arc length, total so far and last correction's x.
+  model::State* state_ = nullptr;
+  VectorXd u0_, du_total_;
+  double lambda0_ = 0.0, ds_ = 0.0, dlambda_ = 0.0, x_ = 0.0;
 };
 
 void refuseDisplacementControl(const model::Model& m, const SolveLog& log) {

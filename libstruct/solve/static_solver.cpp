@@ -9,6 +9,7 @@
 #include "libstruct/solve/diagnosis.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
+#include "libstruct/solve/newton.hpp"
 #include "libstruct/solve/viscous_relaxation.hpp"
 
 namespace flexmoor::solve {
@@ -61,8 +62,10 @@ bool factorizeRegularised(LinearSolver& linear, model::SparseMatrix& K, const So
   return linear.factorize(K);
 }
 
-// The Newton iterations of one increment at the state's load factor.
-class IncrementSolve {
+// The Newton iterations of one increment at the state's load factor (newton.hpp): the static
+// residual P - F and tangent K_T (staticOutOfBalance), refreshed every iteration (full Newton) or
+// every `stiffness_update` iterations (modified Newton, BFGS), regularised when singular.
+class IncrementSolve final : public NewtonProblem {
  public:
   IncrementSolve(const model::Assembler& a, const StaticOptions& o, const SolveLog& log)
       : a_(a),
@@ -72,55 +75,62 @@ class IncrementSolve {
                                                                         : MatrixKind::Symmetric) {}
 
   // Iterates from `state` until the Convergence test holds; a self-corrective increment that
-  // `carries` its residual (Eq. 4.20: one that is not the last) is accepted after one solve. False
-  // when the iterations end without it; throws ConvergenceError on a singular tangent.
+  // `carries` its residual (Eq. 4.20: one that is not the last) is accepted after one solve while
+  // its residual stays acceptable(). False when the iterations end without it; throws
+  // ConvergenceError on a singular tangent.
   bool run(model::State& state, bool carries, IterationRecord& rec) {
+    state_ = &state;
+    carries_ = carries;
     trace_.start();
     regularised_ = false;
     updates_ = 0;
-    IterateNorms norms;
-    Backtracking backtracking;
-    Eigen::VectorXd du, previous_residual;
-    for (int it = 0; it <= o_.max_iterations; ++it) {
-      const bool update = o_.flavour == NewtonFlavour::Full || it == 0 ||
-                          it % std::max(1, o_.stiffness_update) == 0;
-      const Residual R = staticOutOfBalance(a_, state, update ? &K_ : nullptr);
-      rec.residual_norm = norms.residual = R.relative();
-      trace_.residual(rec.residual_norm);
-      if (update) floor_ = R.floor;
-      norms.residual_floor = floor_;
-      if (it > 0) log_.report(rec);
-      if (it > 0 && (carries || converged(o_.convergence, norms))) return true;
-      if (it == o_.max_iterations) return false;
-      if (backtracking.halve(it, rec.residual_norm)) {  // du halved: half of it taken back
-        du *= 0.5;
-        a_.addFree(-du, state.displacement);
-        incrementNorm(a_, du, state.displacement, norms);
-        rec.displacement_norm = norms.displacement;
-        continue;
-      }
-      if (!std::isfinite(rec.residual_norm)) return false;
-      if (o_.flavour == NewtonFlavour::Bfgs && it > 0) bfgs_.add(du, previous_residual - R.free);
-      if (update) {
-        ++updates_;
-        if (o_.pressure_load_stiffness) a_.subtractLoadStiffness(state, K_);
-        if (!factorizeRegularised(linear_, K_, log_, regularised_))
-          throw ConvergenceError(
-              failure(o_, rec, "has a singular tangent",
-                      "a mechanism: a free motion that no support or stiffness holds, loaded"),
-              rec);
-        bfgs_.reset();
-      }
-      du = o_.flavour == NewtonFlavour::Bfgs ? bfgs_.apply(R.free, linear_) : linear_.solve(R.free);
-      previous_residual = R.free;
-      trace_.increment(a_.model(), du);
-      a_.addFree(du, state.displacement);
-      rec.iteration = it + 1;
-      incrementNorm(a_, du, state.displacement, norms);
-      rec.displacement_norm = norms.displacement;
-    }
-    return false;
+    NewtonSettings settings;
+    settings.max_iterations = o_.max_iterations;
+    settings.single_solve = carries;
+    const NewtonOutcome out = newtonSolve(*this, settings, a_.model(), trace_, rec);
+    if (out.result == NewtonResult::NoIncrement)
+      throw ConvergenceError(
+          failure(o_, rec, "has a singular tangent",
+                  "a mechanism: a free motion that no support or stiffness holds, loaded"),
+          rec);
+    return out.converged();
   }
+
+  void evaluate(int it, Eigen::VectorXd& R, IterateNorms& norms) override {
+    update_ =
+        o_.flavour == NewtonFlavour::Full || it == 0 || it % std::max(1, o_.stiffness_update) == 0;
+    Residual r = staticOutOfBalance(a_, *state_, update_ ? &K_ : nullptr);
+    norms.residual = r.relative();
+    if (update_) floor_ = r.floor;
+    norms.residual_floor = floor_;
+    R.swap(r.free);
+  }
+  bool accepts(const IterateNorms& norms) const override {
+    return carries_ ? acceptable(norms.residual, norms.residual_floor)
+                    : converged(o_.convergence, norms);
+  }
+  bool increment(int it, const Eigen::VectorXd& R, Eigen::VectorXd& du) override {
+    if (o_.flavour == NewtonFlavour::Bfgs && it > 0) bfgs_.add(du, previous_residual_ - R);
+    if (update_) {
+      ++updates_;
+      if (o_.pressure_load_stiffness) a_.subtractLoadStiffness(*state_, K_);
+      if (!factorizeRegularised(linear_, K_, log_, regularised_)) return false;
+      bfgs_.reset();
+    }
+    du = o_.flavour == NewtonFlavour::Bfgs ? bfgs_.apply(R, linear_) : linear_.solve(R);
+    previous_residual_ = R;
+    return true;
+  }
+  void add(const Eigen::VectorXd& du, double scale) override {
+    if (scale == 1.0)
+      a_.addFree(du, state_->displacement);
+    else
+      a_.addFree(scale * du, state_->displacement);
+  }
+  void measure(const Eigen::VectorXd& du, IterateNorms& norms) const override {
+    incrementNorm(a_, du, state_->displacement, norms);
+  }
+  void evaluated(const IterationRecord& rec) const override { log_.report(rec); }
 
   const NewtonTrace& trace() const { return trace_; }
   bool regularised() const { return regularised_; }
@@ -134,7 +144,11 @@ class IncrementSolve {
   model::SparseMatrix K_;
   BfgsUpdates bfgs_;
   NewtonTrace trace_;
-  double floor_ = 0.0;  // round-off floor of the residual at the last tangent
+  Eigen::VectorXd previous_residual_;
+  model::State* state_ = nullptr;  // the iterate of the increment under way
+  bool carries_ = false;
+  bool update_ = false;  // the tangent is refreshed at this iteration
+  double floor_ = 0.0;   // round-off floor of the residual at the last tangent
   bool regularised_ = false;
   int updates_ = 0;
 };

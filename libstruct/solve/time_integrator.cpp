@@ -180,77 +180,96 @@ bool TimeIntegrator::attempt(model::State& s, double h, IterationRecord& rec) {
   if (!self_corrective) u += h * v_n;
   trace_.start();
   singular_ = false;
-  VectorXd& du = scratch_.increment;  // the last increment taken
-  Backtracking backtracking;
-  IterateNorms norms;
-  VectorXd &acc = scratch_.acceleration, &v = scratch_.velocity;
-  VectorXd &balance_here = scratch_.balance_here, &inertia_full = scratch_.inertia;
+  step_ = StepSolve{h,
+                    a0,
+                    a1,
+                    a2,
+                    self_corrective,
+                    tangent_iterates,
+                    loads_iterate,
+                    loads_at_predictor,
+                    refresh_each_step};
+  NewtonSettings settings;
+  settings.max_iterations = o_.max_iterations;
+  // Eq. 4.20: the self-corrective scheme's one solve is accepted, its residual carried into the
+  // next step, while that residual stays acceptable (a step it throws further out of balance
+  // is cut like any other that fails).
+  settings.single_solve = self_corrective;
+  const NewtonOutcome out = newtonSolve(*this, settings, model_, trace_, rec, scratch_.newton);
+  report_.iterations += out.solves;
+  report_.backtracks += out.backtracks;
+  if (!out.converged()) return false;
+  force_scale_ = step_.scale;
+  s = next;
+  steps_since_update_ = refresh_each_step ? 0 : steps_since_update_ + 1;
+  s.motion = record(s);
+  kept_.valid = true;
+  kept_.tangent = step_.tangent;
+  kept_.loads = step_.loads;
+  kept_.h = h;
+  kept_.state = s;
+  kept_.balance = scratch_.balance_here;
+  return true;
+}
+
+// The iterate u's acceleration and velocity by Newmark (Eq. 4.57-4.58), and its residual (Eq.
+// 4.63) with the matrices the step's schedule takes at this iteration.
+void TimeIntegrator::evaluate(int it, VectorXd& R_out, IterateNorms& norms) {
+  const StepSolve& k = step_;
+  model::State& next = scratch_.next;
+  const VectorXd &u_n = scratch_.u_n, &v_n = scratch_.v_n, &acc_n = scratch_.acc_n;
+  VectorXd &u = scratch_.u, &acc = scratch_.acceleration, &v = scratch_.velocity;
+  acc = k.a0 * (u - u_n) - k.a1 * v_n - k.a2 * acc_n;       // Eq. 4.57
+  v = v_n + k.h * ((1.0 - gamma_) * acc_n + gamma_ * acc);  // Eq. 4.58
+  setFree(model_, u, next.displacement);
+  setFree(model_, v, next.velocity);
+  setFree(model_, acc, next.acceleration);
+  step_.tangent = it > 0 && k.tangent_iterates;
+  step_.loads = it > 0 ? k.loads_iterate : k.loads_at_predictor;
   Residual& R = scratch_.residual;
-  for (int it = 0; it <= o_.max_iterations; ++it) {
-    acc = a0 * (u - u_n) - a1 * v_n - a2 * acc_n;           // Eq. 4.57
-    v = v_n + h * ((1.0 - gamma_) * acc_n + gamma_ * acc);  // Eq. 4.58
-    setFree(model_, u, next.displacement);
-    setFree(model_, v, next.velocity);
-    setFree(model_, acc, next.acceleration);
-    const bool tangent = it > 0 && tangent_iterates;
-    const bool loads = it > 0 ? loads_iterate : loads_at_predictor;
-    balance(next, tangent, loads, R);
-    balance_here = R.free;
-    assembler_.inertiaForce(masses_, next, inertia_full);
-    assembler_.restrictToFree(inertia_full, scratch_.free);
-    R.free = (1.0 + alpha_) * R.free - scratch_.free;  // Eq. 4.63
-    if (alpha_ != 0.0) R.free -= alpha_ * previous_balance;
-    // The forces pass through zero twice a period, so the residual is measured against the
-    // largest force seen in the run, not the instantaneous one (round-off would stall Newton).
-    const double scale = std::max({R.scale, inertia_full.norm(), force_scale_});
-    if (tangent) floor_ = R.floor * R.scale / scale;
-    R.scale = scale;
-    rec.residual_norm = norms.residual = R.relative();
-    norms.residual_floor = floor_;
-    trace_.residual(rec.residual_norm);
-    // Eq. 4.20: the self-corrective scheme's one solve is accepted, its residual carried into the
-    // next step, while that residual stays acceptable (a step it throws further out of balance
-    // is cut like any other that fails).
-    if (it > 0 && (self_corrective ? acceptable(norms.residual, norms.residual_floor)
-                                   : converged(o_.convergence, norms))) {
-      force_scale_ = R.scale;
-      s = next;
-      steps_since_update_ = refresh_each_step ? 0 : steps_since_update_ + 1;
-      s.motion = record(s);
-      kept_.valid = true;
-      kept_.tangent = tangent;
-      kept_.loads = loads;
-      kept_.h = h;
-      kept_.state = s;
-      kept_.balance = balance_here;
-      return true;
-    }
-    if (it == o_.max_iterations || (self_corrective && it > 0)) return false;
-    // Backtracking (equilibrium.hpp): without it a kink in the loads makes full Newton cycle
-    // between its two sides, and the step is cut in vain.
-    if (backtracking.halve(it, rec.residual_norm)) {
-      du *= 0.5;
-      u -= du;
-      ++report_.backtracks;
-      incrementNorm(assembler_, du, next.displacement, norms);
-      rec.displacement_norm = norms.displacement;
-      continue;
-    }
-    if (!std::isfinite(rec.residual_norm)) return false;
-    const bool new_matrices = it == 0 ? refresh_each_step || motion_loads_ : tangent || loads;
-    if (new_matrices) {
-      factorEffectiveTangent(h);
-      if (singular_) return false;
-    }
-    linear_.solve(R.free, du);
-    u += du;
-    trace_.increment(model_, du);
-    ++report_.iterations;
-    rec.iteration = it + 1;
-    incrementNorm(assembler_, du, next.displacement, norms);
-    rec.displacement_norm = norms.displacement;
+  balance(next, step_.tangent, step_.loads, R);
+  scratch_.balance_here = R.free;
+  VectorXd& inertia_full = scratch_.inertia;
+  assembler_.inertiaForce(masses_, next, inertia_full);
+  assembler_.restrictToFree(inertia_full, scratch_.free);
+  R.free = (1.0 + alpha_) * R.free - scratch_.free;  // Eq. 4.63
+  if (alpha_ != 0.0) R.free -= alpha_ * scratch_.previous_balance;
+  // The forces pass through zero twice a period, so the residual is measured against the
+  // largest force seen in the run, not the instantaneous one (round-off would stall Newton).
+  const double scale = std::max({R.scale, inertia_full.norm(), force_scale_});
+  if (step_.tangent) floor_ = R.floor * R.scale / scale;
+  R.scale = step_.scale = scale;
+  norms.residual = R.relative();
+  norms.residual_floor = floor_;
+  R_out.swap(R.free);
+}
+
+bool TimeIntegrator::accepts(const IterateNorms& norms) const {
+  return step_.self_corrective ? acceptable(norms.residual, norms.residual_floor)
+                               : converged(o_.convergence, norms);
+}
+
+bool TimeIntegrator::increment(int it, const VectorXd& R, VectorXd& du) {
+  const bool new_matrices =
+      it == 0 ? step_.refresh_each_step || motion_loads_ : step_.tangent || step_.loads;
+  if (new_matrices) {
+    factorEffectiveTangent(step_.h);
+    if (singular_) return false;
   }
-  return false;
+  linear_.solve(R, du);
+  return true;
+}
+
+void TimeIntegrator::add(const VectorXd& du, double scale) {
+  if (scale == 1.0)
+    scratch_.u += du;
+  else
+    scratch_.u += scale * du;
+}
+
+// The increment against the element size, its floor from the iterate it was solved at.
+void TimeIntegrator::measure(const VectorXd& du, IterateNorms& norms) const {
+  incrementNorm(assembler_, du, scratch_.next.displacement, norms);
 }
 
 void TimeIntegrator::fail(const model::State& s, double h, const IterationRecord& rec) const {

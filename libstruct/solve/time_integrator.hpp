@@ -12,6 +12,7 @@
 #include "libstruct/solve/diagnosis.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
+#include "libstruct/solve/newton.hpp"
 #include "libstruct/solve/solve_log.hpp"
 #include "libstruct/solve/solver_options.hpp"
 
@@ -36,7 +37,9 @@ struct IntegratorCheckpoint {
   double next_step = 0.0;  // adaptive steps: the step to try next
 };
 
-class TimeIntegrator {
+// Each step's Newton iterations are the one loop of newton.hpp, over the step's residual (Eq.
+// 4.63), which the integrator supplies as a NewtonProblem.
+class TimeIntegrator : private NewtonProblem {
  public:
   // `assembler` and `options` must outlive the integrator.
   TimeIntegrator(const model::Assembler& assembler, const DynamicOptions& options,
@@ -79,6 +82,13 @@ class TimeIntegrator {
     double start_u, start_v, end_u, end_v, start_time, duration;
   };
   bool attempt(model::State& s, double h, IterationRecord& rec);
+  // The step under way as a NewtonProblem (attempt): its end state's free displacements are the
+  // unknowns, scratch_.u.
+  void evaluate(int it, Eigen::VectorXd& R, IterateNorms& norms) override;
+  bool accepts(const IterateNorms& norms) const override;
+  bool increment(int it, const Eigen::VectorXd& R, Eigen::VectorXd& du) override;
+  void add(const Eigen::VectorXd& du, double scale) override;
+  void measure(const Eigen::VectorXd& du, IterateNorms& norms) const override;
   // The local error of the step just accepted, of size h, against its tolerance (AdaptiveSteps).
   double localError(double h) const;
   void adaptiveSteps(model::State& s, double t_end,
@@ -131,6 +141,15 @@ class TimeIntegrator {
     Eigen::VectorXd balance;
   } kept_;
   bool singular_ = false;  // the last step tried had a singular effective tangent
+  // The step under way: its size and Newmark constants (Eq. 4.57-4.58), which matrices its
+  // iterations take (attempt), and what the last evaluation took and measured against.
+  struct StepSolve {
+    double h = 0.0, a0 = 0.0, a1 = 0.0, a2 = 0.0;
+    bool self_corrective = false, tangent_iterates = false, loads_iterate = false;
+    bool loads_at_predictor = false, refresh_each_step = false;
+    bool tangent = false, loads = false;  // of the last evaluation
+    double scale = 0.0;                   // the last evaluation's force scale
+  } step_;
   // Work space of the iterations, whose storage is reused: a Newton iteration allocates nothing.
   struct Scratch {
     BalanceScratch balance;
@@ -138,6 +157,7 @@ class TimeIntegrator {
     Eigen::VectorXd viscous, inertia, free, acceleration, velocity, balance_here, increment;
     Eigen::VectorXd u_n, v_n, acc_n, u, previous_balance;  // the step's start and iterate
     model::State next;                                     // the state the step goes to
+    NewtonWork newton;
   } scratch_;
 };
 

@@ -7,6 +7,7 @@
 #include "libstruct/solve/diagnosis.hpp"
 #include "libstruct/solve/equilibrium.hpp"
 #include "libstruct/solve/linear_solver.hpp"
+#include "libstruct/solve/newton.hpp"
 
 namespace flexmoor::solve {
 namespace {
@@ -19,34 +20,77 @@ double changeRatio(const model::Assembler& assembler, const Eigen::VectorXd& du,
   return u_norm > 0.0 ? du.norm() / u_norm : du.norm();
 }
 
-// Newton on one implicit pseudo-time step of unit length (Eq. C.8-C.10):
+// Newton (newton.hpp) on one implicit pseudo-time step of unit length (Eq. C.8-C.10):
 // [K_T + K_L + C I] du = P - F(u) - C (u - u_prev), K_L the motion-dependent loads' stiffness.
-// Returns false if it does not converge.
-// `trace` records the iterations; `stiffness` is set to the mean |K_ii| of the tangent.
-bool relaxationStep(const model::Assembler& assembler, model::State& state,
-                    const model::NodalField& previous, double C, const RelaxationOptions& o,
-                    LinearSolver& linear, int& iterations, NewtonTrace& trace, double& stiffness) {
-  model::SparseMatrix K;
-  trace.start();
-  for (int it = 0; it < o.max_iterations; ++it) {
-    Residual R = staticOutOfBalance(assembler, state, &K);
-    trace.residual(R.relative());
-    if (K.rows() > 0) stiffness = K.diagonal().cwiseAbs().mean();
-    const Eigen::VectorXd velocity =
-        assembler.restrictToFree(asVector(state.displacement) - asVector(previous));
-    R.free -= C * velocity;     // D u' with D = C I (Eq. C.11)
-    K.diagonal().array() += C;  // Eq. C.10
-    if (!linear.factorize(K)) return false;
-    const Eigen::VectorXd du = linear.solve(R.free);
-    trace.increment(assembler.model(), du);
-    if (!du.allFinite()) return false;
-    assembler.addFree(du, state.displacement);
-    ++iterations;
-    const double change = changeRatio(assembler, du, state.displacement);
-    if (change < 1e-10 || R.relative() < 0.1 * o.residual_tolerance) return true;
+// A step is solved when its residual is a tenth of the relaxation's residual tolerance (or at the
+// round-off floor), by the Convergence test of every solver.
+class RelaxationStep final : public NewtonProblem {
+ public:
+  RelaxationStep(const model::Assembler& a, const RelaxationOptions& o)
+      : a_(a),
+        o_(o),
+        linear_(a.model().hasMotionLoads() ? MatrixKind::Unsymmetric : MatrixKind::Symmetric) {
+    convergence_.use_displacement = false;
+    convergence_.residual_tolerance = 0.1 * o.residual_tolerance;
   }
-  return false;
-}
+
+  // Solves the step from `previous` to `state` with damping C; false if it does not converge.
+  bool run(model::State& state, const model::NodalField& previous, double C, int& iterations) {
+    state_ = &state;
+    previous_ = &previous;
+    C_ = C;
+    trace_.start();
+    NewtonSettings settings;
+    settings.max_iterations = o_.max_iterations;
+    // No backtracking: the damping keeps a pseudo-time step's Newton where it converges, and
+    // halving an increment whose residual rose on the way only slows it (Example 4's sheet: its
+    // first step then fails in 30 iterations and is retried with ten times the damping).
+    settings.backtracking = false;
+    IterationRecord rec;
+    const NewtonOutcome out = newtonSolve(*this, settings, a_.model(), trace_, rec);
+    iterations += out.solves;
+    return out.converged();
+  }
+
+  void evaluate(int, Eigen::VectorXd& R, IterateNorms& norms) override {
+    Residual r = staticOutOfBalance(a_, *state_, &K_);
+    if (K_.rows() > 0) stiffness_ = K_.diagonal().cwiseAbs().mean();
+    r.free -= C_ * a_.restrictToFree(asVector(state_->displacement) - asVector(*previous_));
+    K_.diagonal().array() += C_;  // Eq. C.10, D = C I (Eq. C.11)
+    norms.residual = r.relative();
+    norms.residual_floor = floor_ = r.floor;
+    R.swap(r.free);
+  }
+  bool accepts(const IterateNorms& norms) const override { return converged(convergence_, norms); }
+  bool increment(int, const Eigen::VectorXd& R, Eigen::VectorXd& du) override {
+    if (!linear_.factorize(K_)) return false;
+    du = linear_.solve(R);
+    return du.allFinite();
+  }
+  void add(const Eigen::VectorXd& du, double scale) override {
+    a_.addFree(scale * du, state_->displacement);
+  }
+  void measure(const Eigen::VectorXd& du, IterateNorms& norms) const override {
+    incrementNorm(a_, du, state_->displacement, norms);
+  }
+
+  const NewtonTrace& trace() const { return trace_; }
+  double stiffness() const { return stiffness_; }  // mean |K_ii| of the last tangent
+  double floor() const { return floor_; }          // Residual::floor of the last tangent
+
+ private:
+  const model::Assembler& a_;
+  const RelaxationOptions& o_;
+  LinearSolver linear_;
+  Convergence convergence_;
+  model::SparseMatrix K_;
+  NewtonTrace trace_;
+  model::State* state_ = nullptr;
+  const model::NodalField* previous_ = nullptr;
+  double C_ = 0.0;
+  double stiffness_ = 0.0;
+  double floor_ = 0.0;
+};
 
 // Why a pseudo-time step fails even with a raised damping.
 std::string stepFailure(int step, double C, int retries, const NewtonTrace& trace, double stiffness,
@@ -94,29 +138,31 @@ std::string notSettled(const RelaxationOptions& o, const RelaxationReport& r,
 // and gamma the decrement coefficient. The damping therefore falls at least by 1/mu per step,
 // faster as the motion dies out; gamma > 1 slows the fall in later steps. A step whose Newton
 // iterations fail is retried with ten times the damping, so the schedule cannot run away. The run
-// ends when Eq. C.15 is below the tolerance and the static residual below residual_tolerance.
+// ends when Eq. C.15 is below the tolerance and the static residual below residual_tolerance (or
+// its round-off floor).
 RelaxationReport relax(const model::Assembler& assembler, model::State& state,
                        const RelaxationOptions& o, const SolveLog& log) {
   RelaxationReport report;
-  LinearSolver linear(assembler.model().hasMotionLoads() ? MatrixKind::Unsymmetric
-                                                         : MatrixKind::Symmetric);
-  NewtonTrace trace;
-  double stiffness = 0.0;
+  RelaxationStep pseudo_step(assembler, o);
   LargestMove move;  // the largest change of the last step
   state.load_factor = o.load_factor;
   assembler.applyPrescribed(state);
   putAtRest(state, o.frozen_waves);
+  Convergence equilibrium;
+  equilibrium.use_displacement = false;
+  equilibrium.residual_tolerance = o.residual_tolerance;
   double C = o.damping;
   double mu = o.initial_damping_factor;
   for (int step = 1; step <= o.max_steps; ++step) {
     const model::NodalField previous = state.displacement;
     int retries = 0;
-    while (!relaxationStep(assembler, state, previous, C, o, linear, report.iterations, trace,
-                           stiffness)) {
+    while (!pseudo_step.run(state, previous, C, report.iterations)) {
       state.displacement = previous;
       if (++retries > 8) {
         IterationRecord rec{step, 0, state.load_factor, report.change_ratio, report.residual_norm};
-        throw ConvergenceError(stepFailure(step, C, retries - 1, trace, stiffness, log), rec);
+        throw ConvergenceError(
+            stepFailure(step, C, retries - 1, pseudo_step.trace(), pseudo_step.stiffness(), log),
+            rec);
       }
       C *= 10.0;
     }
@@ -133,7 +179,12 @@ RelaxationReport relax(const model::Assembler& assembler, model::State& state,
     std::ostringstream s;
     s << "relax step " << step << "  C " << C << "  change " << ratio << "  |R|/|P| " << residual;
     log.say(s.str());
-    if (ratio < o.tolerance && residual < o.residual_tolerance) return report;
+    // The equilibrium, by the residual test of every solver (converged()), with the round-off
+    // floor of the step's last tangent.
+    IterateNorms balance;
+    balance.residual = residual;
+    balance.residual_floor = pseudo_step.floor();
+    if (ratio < o.tolerance && converged(equilibrium, balance)) return report;
     C *= mu * ratio;    // Eq. C.12-C.13
     mu *= o.decrement;  // Eq. C.14
   }

@@ -56,7 +56,10 @@ TEST(SolverDiagnosis, StaticMechanismUnderLoadIsNamed) {
                             "the largest displacement increment of the last iteration"});
 }
 
-// Relaxation: the message says more than "did not reach equilibrium in 50 steps".
+// Relaxation: the message names the mechanism and where it moves. The wire falls further with
+// every pseudo-time step, as the damping falls; at step 35 the step's Newton iterations stall (a
+// residual of 6e-4 of the forces, increments of 3e-10) however much the damping is raised, and the
+// step fails with the mechanism named.
 TEST(SolverDiagnosis, RelaxationOfAMechanismUnderLoadIsNamed) {
   const auto m = unsupportedWire(7850.0);
   m->numberEquations();
@@ -65,8 +68,8 @@ TEST(SolverDiagnosis, RelaxationOfAMechanismUnderLoadIsNamed) {
   solve::RelaxationOptions o;
   o.max_steps = 50;
   const std::string message = failure([&] { solve::relax(assembler, state, o); });
-  expectFragments(message, {"did not reach equilibrium in 50 steps", "the load stays unbalanced",
-                            "a mechanism", "at node"});
+  expectFragments(message, {"viscous relaxation step", "did not converge even with damping",
+                            "the motion is one no stiffness holds: a mechanism", "at node"});
 }
 
 // Modes without mass: the dof is named, not only "the mass matrix is not positive definite". The wire
