@@ -5,7 +5,7 @@
 #   P/include/flexmoor/{libstruct,libhydro,apps}/...   (and P/include/flexmoor.h: the C API)
 #   P/lib/cmake/flexmoor/   find_package(flexmoor): the target flexmoor::flexmoor
 #   P/lib/pkgconfig/flexmoor.pc
-#   P/share/flexmoor/{cases,plot}/   found at run time from the library (apps/case/data_dir.hpp)
+#   P/share/flexmoor/{cases,plot}/   found at run time from the library (apps/common/data_dir.hpp)
 #   P/share/doc/flexmoor/
 # The build tree has share/flexmoor too, its folders links to the source's, so that a command or
 # library run from the build tree finds them by the same relative path.

@@ -11,9 +11,9 @@
 
 #include "apps/capi/flexmoor.h"
 #include "apps/capi/log_lines.hpp"
-#include "apps/case/diagnostics.hpp"
 #include "apps/host/coupled_bodies.hpp"
 #include "apps/problem/case.hpp"
+#include "apps/problem/case_error.hpp"
 #include "apps/run/case_run.hpp"
 #include "apps/run/simulation.hpp"
 #include "libstruct/solve/solve_log.hpp"

@@ -1,9 +1,10 @@
 #pragma once
-// The state of one case file being read, shared by the readers of its sections (one file each:
-// read_materials.cpp, read_mesh.cpp, read_surfaces.cpp, node_refs.cpp, read_histories.cpp,
+// The state of one case file being read, shared by the readers of its sections (read/, one file
+// each: read_materials.cpp, read_mesh.cpp, read_surfaces.cpp, node_refs.cpp, read_histories.cpp,
 // read_conditions.cpp, read_enclosed_fluid.cpp, read_hydro.cpp, read_steps.cpp, read_summary.cpp,
-// read_output.cpp, read_figure.cpp): the Case they fill (apps/problem/case.hpp) and what they
-// read but the model takes later (the lines' cables, the surfaces' elements, the bodies' masses).
+// read_output.cpp, read_figure.cpp) and by what builds and checks the model after them (build/,
+// check/): the Case they fill (apps/problem/case.hpp) and what they read but the model takes
+// later (the lines' cables, the surfaces' elements, the bodies' masses).
 // A name defined with errors is remembered as broken, so that what refers to it is not reported
 // again.
 #include <functional>
@@ -16,8 +17,8 @@
 #include <vector>
 
 #include "apps/case/hydro_spec.hpp"
-#include "apps/case/node_table.hpp"
-#include "apps/case/yaml_input.hpp"
+#include "apps/case/input/node_table.hpp"
+#include "apps/case/input/yaml_input.hpp"
 #include "apps/problem/case.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/membrane_element.hpp"

@@ -7,10 +7,10 @@
 #include <stdexcept>
 
 #include "apps/case/case_builder.hpp"
-#include "apps/case/data_dir.hpp"
-#include "apps/case/nearest_names.hpp"
+#include "apps/case/input/nearest_names.hpp"
+#include "apps/case/input/yaml_load.hpp"
 #include "apps/case/scenarios/scenario.hpp"
-#include "apps/case/yaml_load.hpp"
+#include "apps/common/data_dir.hpp"
 #include "libstruct/element/spring_element.hpp"
 
 namespace flexmoor::app {
@@ -38,7 +38,7 @@ std::string readName(Diagnostics& diag, Input& in, const Fields& top, const std:
   return stem;
 }
 
-// Every .yaml under the cases directory (data_dir.hpp).
+// Every .yaml under the cases directory (apps/common/data_dir.hpp).
 std::vector<fs::path> caseFiles() {
   std::vector<fs::path> files;
   const fs::path dir = casesDir();

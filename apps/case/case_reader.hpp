@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "apps/case/diagnostics.hpp"
-#include "apps/case/node_table.hpp"
+#include "apps/case/input/diagnostics.hpp"
+#include "apps/case/input/node_table.hpp"
 #include "apps/problem/case.hpp"
 
 namespace flexmoor::app {
@@ -54,15 +54,16 @@ struct ForeignSeries {
 Case readCase(const CaseDocument& document, ForeignSeries* series = nullptr);
 
 // An existing file as it is, or with `.yaml` added; else the case `<name>.yaml` anywhere under
-// the cases folder (casesDir of data_dir.hpp; `name` with or without `.yaml`). Throws
-// std::runtime_error when there is none, with the nearest names ("no case 'oc4-semi-surg'; did
-// you mean 'oc4-semi-surge'?"; for a path, the nearest .yaml files next to it; every available
-// name when none is near), when there are several, or when the cases folder is not found.
+// the cases folder (casesDir of apps/common/data_dir.hpp; `name` with or without `.yaml`).
+// Throws std::runtime_error when there is none, with the nearest names ("no case
+// 'oc4-semi-surg'; did you mean 'oc4-semi-surge'?"; for a path, the nearest .yaml files next to
+// it; every available name when none is near), when there are several, or when the cases folder
+// is not found.
 std::string resolveCasePath(const std::string& name_or_path);
 
-// (name, title) of every .yaml under the cases folder (data_dir.hpp), sorted by name; the name
-// is the file's stem, the title its `title:` key. Throws std::runtime_error when the folder is not
-// found.
+// (name, title) of every .yaml under the cases folder (apps/common/data_dir.hpp), sorted by
+// name; the name is the file's stem, the title its `title:` key. Throws std::runtime_error when
+// the folder is not found.
 std::vector<std::pair<std::string, std::string>> listCases();
 
 }  // namespace flexmoor::app

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "apps/case/case_reader.hpp"
-#include "apps/case/diagnostics.hpp"
 #include "apps/cli/help_text.hpp"
 #include "apps/output/netcdf_file.hpp"
+#include "apps/problem/case_error.hpp"
 #include "apps/run/draw_figure.hpp"
 #include "apps/run/run_case.hpp"
 #include "apps/study/run_study.hpp"
@@ -137,7 +137,7 @@ int plot(const std::string& result, const std::string& png, const std::vector<st
   std::vector<std::string> args;
   try {
     args = plotArguments(result, png, series, title, figure_options);
-  } catch (const std::exception& e) {  // the script is not found (apps/case/data_dir.hpp)
+  } catch (const std::exception& e) {  // the script is not found (apps/common/data_dir.hpp)
     std::cerr << "flexmoor plot: " << e.what() << "\n";
     return kRunFailed;
   }
@@ -153,7 +153,7 @@ int plot(const std::string& result, const std::string& png, const std::vector<st
 int listNamedCases() {
   try {
     for (const auto& [name, title] : listCases()) std::cout << name << "  " << title << "\n";
-  } catch (const std::exception& e) {  // the cases folder is not found (apps/case/data_dir.hpp)
+  } catch (const std::exception& e) {  // the cases folder is not found (apps/common/data_dir.hpp)
     std::cerr << "flexmoor: " << e.what() << "\n";
     return kRunFailed;
   }

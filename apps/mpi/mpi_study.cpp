@@ -7,8 +7,8 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "apps/case/diagnostics.hpp"
 #include "apps/mpi/mpi_ranks.hpp"
+#include "apps/problem/case_error.hpp"
 #include "apps/run/run_case.hpp"
 #include "apps/study/run_study.hpp"
 #include "apps/study/study_reader.hpp"

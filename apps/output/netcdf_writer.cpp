@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "apps/case/diagnostics.hpp"
+#include "apps/common/format_number.hpp"
 #include "apps/output/finite_value.hpp"
 #include "apps/output/membrane_resultants.hpp"
 #include "apps/problem/unit_system.hpp"

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "apps/case/data_dir.hpp"
+#include "apps/common/data_dir.hpp"
 
 extern char** environ;
 
@@ -39,7 +39,7 @@ bool drawFigure(const FigureSpec& figure, const std::string& case_title, const s
     args = plotArguments(
         netcdf, temporary, figure.series, figure.title.empty() ? case_title : figure.title,
         mooring ? std::vector<std::string>{"--mooring"} : std::vector<std::string>{});
-  } catch (const std::runtime_error& e) {  // the script is not found (data_dir.hpp)
+  } catch (const std::runtime_error& e) {  // the script is not found (apps/common/data_dir.hpp)
     diag << "flexmoor: the figure was not drawn: " << e.what() << "; the results are complete\n";
     return false;
   }

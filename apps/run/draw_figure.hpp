@@ -1,6 +1,6 @@
 #pragma once
 // The figure of a run (a case's figure:): drawn by apps/plot/flexmoor_plot.py (found by
-// plotScript of apps/case/data_dir.hpp) under Debian's interpreter from the netCDF the run left,
+// plotScript of apps/common/data_dir.hpp) under Debian's interpreter from the netCDF the run left,
 // into a temporary file renamed into place, so a figure is whole or absent.
 #include <ostream>
 #include <string>

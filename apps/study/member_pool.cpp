@@ -12,7 +12,6 @@
 #include <iostream>
 #include <map>
 
-#include "apps/case/diagnostics.hpp"
 #include "apps/study/member_store.hpp"
 #include "apps/study/run_member.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "apps/case/diagnostics.hpp"
+#include "apps/problem/case_error.hpp"
 #include "apps/run/run_case.hpp"
 #include "apps/study/member_case.hpp"
 #include "apps/study/member_store.hpp"

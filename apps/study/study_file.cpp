@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "apps/case/diagnostics.hpp"
+#include "apps/common/format_number.hpp"
 #include "apps/output/atomic_output.hpp"
 #include "apps/output/netcdf_file.hpp"
 #include "apps/study/member_store.hpp"

@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <optional>
 
-#include "apps/case/units.hpp"
+#include "apps/case/input/units.hpp"
 #include "apps/study/value_path.hpp"
 
 namespace flexmoor::app {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/yaml_input.hpp"
+#include "apps/case/input/yaml_input.hpp"
 #include "apps/study/study.hpp"
 
 namespace flexmoor::app {

@@ -6,8 +6,9 @@
 #include <set>
 
 #include "apps/case/case_reader.hpp"
-#include "apps/case/yaml_input.hpp"
-#include "apps/case/yaml_load.hpp"
+#include "apps/case/input/yaml_input.hpp"
+#include "apps/case/input/yaml_load.hpp"
+#include "apps/common/format_number.hpp"
 #include "apps/study/file_text.hpp"
 #include "apps/study/member_case.hpp"
 #include "apps/study/study_parameters.hpp"

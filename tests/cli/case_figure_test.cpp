@@ -1,4 +1,4 @@
-// A case's figure: (apps/case/read_figure.cpp, apps/run/draw_figure.cpp): a run draws
+// A case's figure: (apps/case/read/read_figure.cpp, apps/run/draw_figure.cpp): a run draws
 // DIR/<case>.png of the series it names, says where, and leaves no figure of an earlier run that
 // it did not draw (--no-figure, or a case without figure:).
 #include <gtest/gtest.h>

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "apps/case/case_reader.hpp"
-#include "apps/case/diagnostics.hpp"
+#include "apps/problem/case_error.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "apps/case/diagnostics.hpp"
+#include "apps/problem/case_error.hpp"
 #include "apps/study/member_case.hpp"
 #include "tests/study/study_cases.hpp"
 #include "tests/support/cli_run.hpp"

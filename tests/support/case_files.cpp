@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "apps/case/case_reader.hpp"
-#include "apps/case/diagnostics.hpp"
+#include "apps/problem/case_error.hpp"
 
 namespace flexmoor::test {
 

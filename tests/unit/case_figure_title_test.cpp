@@ -1,6 +1,6 @@
 // A shipped case's figure title names only nodes that its series draw, by the numbers the
 // figure's legends give (the netCDF's 1-based `node`, which the figure's series select:
-// apps/case/read_figure.cpp), not by another numbering such as the dissertation's.
+// apps/case/read/read_figure.cpp), not by another numbering such as the dissertation's.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,8 +1,8 @@
-// Places on a named line in what a case reports (apps/case/line_refs.cpp): summary: entries and
-// figure: series by `line: NAME` with `end:` (start, end, first, last, 1, 2; anchor and fairlead
-// of a mooring line, `anchor:`), `node: K` or `element: K`; LINE.anchor and LINE.fairlead as
-// node references; element ends as first, last, 1 or 2. Each form must resolve to the very
-// node, element and end its element-number form names.
+// Places on a named line in what a case reports (apps/case/read/line_refs.cpp): summary: entries
+// and figure: series by `line: NAME` with `end:` (start, end, first, last, 1, 2; anchor and
+// fairlead of a mooring line, `anchor:`), `node: K` or `element: K`; LINE.anchor and LINE.fairlead
+// as node references; element ends as first, last, 1 or 2. Each form must resolve to the very node,
+// element and end its element-number form names.
 #include <gtest/gtest.h>
 
 #include <string>

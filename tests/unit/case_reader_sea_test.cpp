@@ -1,5 +1,5 @@
-// The irregular forms of `waves:` (apps/case/read_sea.cpp, build_hydro.cpp): a case's spectrum,
-// discretisation, seed, heading, spreading and band make the very sea that libhydro's
+// The irregular forms of `waves:` (apps/case/read/read_sea.cpp, build_hydro.cpp): a case's
+// spectrum, discretisation, seed, heading, spreading and band make the very sea that libhydro's
 // synthesise makes of them (compared to the bit); units convert (US: Hs in ft, the spectrum's
 // moments in ft^2); a table of S(f) per hertz; a measured record, as a table and as a CSV file,
 // reproduces its samples; ramp_up ramps; the netCDF records the seed and the repeat period.

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "apps/case/case_reader.hpp"
-#include "apps/case/yaml_load.hpp"
+#include "apps/case/input/yaml_load.hpp"
 #include "tests/support/case_files.hpp"
 
 namespace flexmoor::app {

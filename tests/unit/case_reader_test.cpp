@@ -8,8 +8,9 @@
 #include <filesystem>
 #include <string>
 
-#include "apps/case/diagnostics.hpp"
-#include "apps/case/yaml_input.hpp"
+#include "apps/case/input/diagnostics.hpp"
+#include "apps/case/input/yaml_input.hpp"
+#include "apps/common/format_number.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "tests/support/case_files.hpp"
 

@@ -1,4 +1,4 @@
-// The checks of the built model (apps/case/model_checks.cpp): what `check` must refuse
+// The checks of the built model (apps/case/check/model_checks.cpp): what `check` must refuse
 // because `run` would fail on it or report a wrong number, each with the line that defines the
 // element, node, support or step; and the warnings for what runs but perhaps not as meant.
 // The catalogue tests/bad_inputs/ has one file per class for the command line; these tests go
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "apps/case/case_reader.hpp"
-#include "apps/case/diagnostics.hpp"
+#include "apps/case/input/diagnostics.hpp"
 #include "libstruct/element/axisymmetric_membrane.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/membrane_element.hpp"

@@ -1,7 +1,7 @@
-// Files of time series for prescribed motions (apps/case/motion_file.hpp): comma-separated with
-// a header, whitespace- and tab-separated with or without one, columns by name or by 1-based
+// Files of time series for prescribed motions (apps/case/read/motion_file.hpp): comma-separated
+// with a header, whitespace- and tab-separated with or without one, columns by name or by 1-based
 // number, and each problem at its line of the file.
-#include "apps/case/motion_file.hpp"
+#include "apps/case/read/motion_file.hpp"
 
 #include <gtest/gtest.h>
 

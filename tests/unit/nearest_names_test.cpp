@@ -1,5 +1,5 @@
-// The names nearest a mistyped case name (apps/case/nearest_names.hpp).
-#include "apps/case/nearest_names.hpp"
+// The names nearest a mistyped case name (apps/case/input/nearest_names.hpp).
+#include "apps/case/input/nearest_names.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// The fast path for the node table (apps/case/node_table.hpp): a table of plain `ID: [X, Y, Z]`
-// lines is taken out of the text with every line number kept; anything else is left to yaml-cpp,
-// so the reader's model and messages are the same either way.
-#include "apps/case/node_table.hpp"
+// The fast path for the node table (apps/case/input/node_table.hpp): a table of plain
+// `ID: [X, Y, Z]` lines is taken out of the text with every line number kept; anything else is
+// left to yaml-cpp, so the reader's model and messages are the same either way.
+#include "apps/case/input/node_table.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // What `check` takes as holding a group of joined nodes against a rigid translation
-// (apps/case/rigid_translations.hpp): supports, and vertically the seabed under a group that
+// (apps/case/check/rigid_translations.hpp): supports, and vertically the seabed under a group that
 // sinks onto it or the surface over one that floats up to it; never the loads horizontally. A
 // direction nothing holds is an error at the line that defines the group in a relax, static or
 // modes step, and a warning when only dynamic steps see it (inertia resists it there).

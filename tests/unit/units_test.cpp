@@ -1,6 +1,6 @@
 // Units of case files: exact conversions into the US (ft, slug, s) and SI (m, kg, s) systems,
 // unit expressions, and refusal of units of the wrong dimension.
-#include "apps/case/units.hpp"
+#include "apps/case/input/units.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The platform's motion of scenario: spread_mooring given as a table of samples or a file of
-// time series (apps/case/read_motion.hpp: the not-a-knot cubic spline through the samples) against
-// the sine it was sampled from: one OC3-Hywind line (docs/theory.md#oc3-hywind) whose fairlead surges
-// 2 sin(2 pi t / 10 s) m, a 20 s dynamic run. The sine's run is the reference; the table's
+// time series (apps/case/read/read_motion.hpp: the not-a-knot cubic spline through the samples)
+// against the sine it was sampled from: one OC3-Hywind line (docs/theory.md#oc3-hywind) whose
+// fairlead surges 2 sin(2 pi t / 10 s) m, a 20 s dynamic run. The sine's run is the reference; the table's
 // differs by the spline's error alone (tests/unit/cubic_spline_function_test.cpp: at a spacing h
 // = 0.25 s, 1.4e-5 m in position and 3.8e-4 m/s in velocity at most), and the file's (the same
 // samples) is the table's, and so is that of a tab-separated file without a header whose times

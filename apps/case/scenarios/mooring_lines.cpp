@@ -2,7 +2,8 @@
 
 #include <cmath>
 
-#include "apps/case/units.hpp"
+#include "apps/case/input/units.hpp"
+#include "apps/common/format_number.hpp"
 #include "libhydro/mooring/catenary_line.hpp"
 
 namespace flexmoor::app {

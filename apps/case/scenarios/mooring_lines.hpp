@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/yaml_input.hpp"
+#include "apps/case/input/yaml_input.hpp"
 
 namespace flexmoor::app {
 

@@ -1,8 +1,8 @@
 #include "apps/case/scenarios/platform.hpp"
 
-#include "apps/case/read_motion.hpp"
+#include "apps/case/input/units.hpp"
+#include "apps/case/read/read_motion.hpp"
 #include "apps/case/scenarios/yaml_text.hpp"
-#include "apps/case/units.hpp"
 
 namespace flexmoor::app {
 namespace {

@@ -22,7 +22,7 @@
 #include <array>
 #include <optional>
 
-#include "apps/case/yaml_input.hpp"
+#include "apps/case/input/yaml_input.hpp"
 
 namespace flexmoor::app {
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "apps/case/yaml_input.hpp"
+#include "apps/case/input/yaml_input.hpp"
 
 namespace flexmoor::app {
 namespace {

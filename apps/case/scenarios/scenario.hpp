@@ -7,7 +7,7 @@
 // units.
 #include <yaml-cpp/yaml.h>
 
-#include "apps/case/diagnostics.hpp"
+#include "apps/case/input/diagnostics.hpp"
 
 namespace flexmoor::app {
 

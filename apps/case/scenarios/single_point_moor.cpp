@@ -20,10 +20,11 @@
 // start), the buoy cable.end (cable.fairlead).
 #include <cmath>
 
+#include "apps/case/input/units.hpp"
+#include "apps/case/input/yaml_input.hpp"
 #include "apps/case/scenarios/scenario.hpp"
 #include "apps/case/scenarios/yaml_text.hpp"
-#include "apps/case/units.hpp"
-#include "apps/case/yaml_input.hpp"
+#include "apps/common/format_number.hpp"
 
 namespace flexmoor::app {
 namespace {

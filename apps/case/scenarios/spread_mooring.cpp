@@ -58,12 +58,12 @@
 #include <cmath>
 #include <optional>
 
-#include "apps/case/scenarios/scenario.hpp"
+#include "apps/case/input/units.hpp"
+#include "apps/case/input/yaml_input.hpp"
 #include "apps/case/scenarios/mooring_lines.hpp"
 #include "apps/case/scenarios/platform.hpp"
+#include "apps/case/scenarios/scenario.hpp"
 #include "apps/case/scenarios/yaml_text.hpp"
-#include "apps/case/units.hpp"
-#include "apps/case/yaml_input.hpp"
 
 namespace flexmoor::app {
 namespace {

@@ -25,10 +25,11 @@
 // the ring y = 0) by position.
 #include <cmath>
 
+#include "apps/case/input/units.hpp"
+#include "apps/case/input/yaml_input.hpp"
 #include "apps/case/scenarios/scenario.hpp"
 #include "apps/case/scenarios/yaml_text.hpp"
-#include "apps/case/units.hpp"
-#include "apps/case/yaml_input.hpp"
+#include "apps/common/format_number.hpp"
 
 namespace flexmoor::app {
 namespace {

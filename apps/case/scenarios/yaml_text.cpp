@@ -2,8 +2,8 @@
 
 #include <sstream>
 
-#include "apps/case/physical_range.hpp"
-#include "apps/case/units.hpp"
+#include "apps/case/input/physical_range.hpp"
+#include "apps/case/input/units.hpp"
 
 namespace flexmoor::app {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/diagnostics.hpp"
-#include "apps/case/yaml_input.hpp"
+#include "apps/case/input/diagnostics.hpp"
+#include "apps/case/input/yaml_input.hpp"
 #include "apps/problem/case.hpp"
 
 namespace flexmoor::app {

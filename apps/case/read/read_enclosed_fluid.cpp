@@ -1,0 +1,130 @@
+// loads: enclosed_fluid: of a case file, a liquid filling membranes (the dissertation's Example 9,
+// libhydro/loads/enclosed_fluid.hpp):
+//   {on: SURFACE or [SURFACES], density: RHO | specific_gravity: SG, pressure: P, at_z: Z}
+// P is the liquid's gauge pressure at the elevation Z; with gravity it grows by rho_f g per unit
+// depth below Z (at_z is then required). The specific gravity is relative to the water's density.
+// Read with loads:, put on the model after the water (its pressure as a surface load, its mass
+// lumped at the wall's nodes as point_mass elements without weight).
+#include <cmath>
+
+#include "apps/case/case_builder.hpp"
+#include "apps/common/format_number.hpp"
+#include "libhydro/loads/enclosed_fluid.hpp"
+
+namespace flexmoor::app {
+namespace {
+
+// The liquid's density: given, or its specific gravity times the water's.
+std::optional<double> fluidDensity(CaseBuilder& b, const EnclosedFluidSpec& s) {
+  if (s.density) return s.density;
+  if (b.hydro.has_water) return *s.specific_gravity * b.hydro.water.density;
+  b.diag.error(s.line, s.where +
+                           ".specific_gravity: needs the water it is relative to (got no water: "
+                           "section, expected water: {density, depth}, or density: instead)");
+  return std::nullopt;
+}
+
+// The magnitude of the case's gravity, which must act along -z (the liquid's pressure grows
+// downwards); 0 without gravity.
+std::optional<double> fluidGravity(CaseBuilder& b, const EnclosedFluidSpec& s) {
+  const Eigen::Vector3d& g = b.model.gravity();
+  if (g.isZero(0.0)) return 0.0;
+  if (g.z() < 0.0 && std::hypot(g.x(), g.y()) <= 1e-12 * g.norm()) {
+    if (s.at_z) return g.norm();
+    b.diag.error(s.line, s.where +
+                             ": needs the elevation its pressure is given at, since gravity acts "
+                             "(got no at_z, expected at_z: with a length)");
+    return std::nullopt;
+  }
+  b.diag.error(s.line, s.where + ": needs gravity pointing down (got loads.gravity [" +
+                           formatNumber(g.x()) + ", " + formatNumber(g.y()) + ", " +
+                           formatNumber(g.z()) + "], expected [0, 0, -g] with g > 0: z is up)");
+  return std::nullopt;
+}
+
+// Whether the membranes enclose a volume the liquid can fill.
+bool checkEnclosure(CaseBuilder& b, const EnclosedFluidSpec& s, const hydro::Enclosure& e) {
+  const std::string on = s.where + ".on";
+  const std::string length = unitNames(b.c.units).length;
+  if (s.elements.empty()) {
+    b.diag.error(s.line, on + ": names no membranes (got surfaces without membrane elements, "
+                              "expected the membranes that hold the liquid)");
+    return false;
+  }
+  if (e.mixed) {
+    b.diag.error(s.line, on + ": mixes axisymmetric meridians and 3-D membranes (expected one "
+                              "kind for one liquid)");
+    return false;
+  }
+  // A closed wall, or one open only in vertical planes, has int n_z dA = 0; the quadrature
+  // integrates it to round-off (measured below 1e-13 of the area).
+  if (std::abs(e.vertical_area) > 1e-6 * e.area) {
+    b.diag.error(s.line, on + ": does not enclose the liquid (got a vertical projected area of " +
+                             formatNumber(std::abs(e.vertical_area)) + " " + length +
+                             "^2 open to it, expected a closed surface or openings in vertical "
+                             "planes only, as a tube between symmetry planes)");
+    return false;
+  }
+  if (std::abs(e.volume) <= 1e-9 * std::pow(e.area, 1.5)) {
+    b.diag.error(s.line, on + ": encloses no volume in its reference shape (got " +
+                             formatNumber(e.volume) + " " + length +
+                             "^3, expected the liquid's volume: the mass is lumped from it)");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void readEnclosedFluid(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
+  Fields f(b.diag, item, path, {"on", "density", "specific_gravity", "pressure", "at_z"});
+  const YAML::Node* on = f.require("on");
+  const YAML::Node* density = f.find("density");
+  const YAML::Node* sg = f.find("specific_gravity");
+  const YAML::Node* p = f.require("pressure");
+  const YAML::Node* at_z = f.find("at_z");
+  EnclosedFluidSpec s;
+  bool ok = true;
+  if (density && sg) {
+    b.diag.error(*sg, path + ": give either density or specific_gravity, not both");
+    ok = false;
+  } else if (!density && !sg) {
+    b.diag.error(item, path +
+                           ": needs the liquid's density (got neither density nor "
+                           "specific_gravity, expected one of them)");
+    ok = false;
+  }
+  if (density)
+    s.density = b.in.quantity(*density, f.path("density"), kind::kDensity, Limit::Positive);
+  if (sg)
+    s.specific_gravity =
+        b.in.quantity(*sg, f.path("specific_gravity"), kind::kNumber, Limit::Positive);
+  const auto pressure = p ? b.in.quantity(*p, f.path("pressure"), kind::kPressure) : std::nullopt;
+  if (at_z) s.at_z = b.in.quantity(*at_z, f.path("at_z"), kind::kLength);
+  const auto elements = on ? surfaceMembranes(b, *on, f.path("on")) : std::nullopt;
+  ok = ok && elements && pressure && (!density || s.density) && (!sg || s.specific_gravity) &&
+       (!at_z || s.at_z);
+  if (!ok) return;
+  s.elements = *elements;
+  s.pressure = *pressure;
+  s.line = lineOf(item);
+  s.where = path;
+  b.enclosed_fluids.push_back(std::move(s));
+}
+
+void addEnclosedFluids(CaseBuilder& b) {
+  for (const EnclosedFluidSpec& s : b.enclosed_fluids) {
+    const auto density = fluidDensity(b, s);
+    const auto g = fluidGravity(b, s);
+    const hydro::Enclosure e = hydro::measureEnclosure(b.model, s.elements, b.model.initialState());
+    if (!checkEnclosure(b, s, e) || !density || !g) continue;
+    const int added = hydro::addEnclosedFluid(b.model, s.elements,
+                                              {*density, s.pressure, s.at_z.value_or(0.0), *g});
+    for (int i = 0; i < added; ++i) {
+      b.element_types.push_back("point_mass");
+      b.element_origin.push_back({s.line, s.where, ""});
+    }
+  }
+}
+
+}  // namespace flexmoor::app
