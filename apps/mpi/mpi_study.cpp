@@ -16,23 +16,20 @@
 namespace flexmoor::app {
 namespace {
 
-// libflexmoor_mpi.so beside the running binary (bin/ of the build), else where it was built.
+// libflexmoor_mpi.so beside the running binary: in bin/ of the build and of an installation
+// (cmake/install.cmake), wherever either is moved to.
 const FlexmoorMpiRanks& loadRanks() {
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  std::string tried;
-  for (const std::filesystem::path& candidate :
-       {self.parent_path() / "libflexmoor_mpi.so", std::filesystem::path(FLEXMOOR_MPI_MODULE)}) {
-    // RTLD_GLOBAL: OpenMPI's own components, loaded by MPI_Init, resolve libmpi's symbols.
-    if (void* module = dlopen(candidate.c_str(), RTLD_NOW | RTLD_GLOBAL)) {
-      using Entry = const FlexmoorMpiRanks* (*)();
-      if (auto entry = reinterpret_cast<Entry>(dlsym(module, "flexmoor_mpi_ranks")))
-        return *entry();
-    }
-    tried += (tried.empty() ? "" : "; ") + candidate.string() + ": " + dlerror();
+  const std::filesystem::path module = self.parent_path() / "libflexmoor_mpi.so";
+  // RTLD_GLOBAL: OpenMPI's own components, loaded by MPI_Init, resolve libmpi's symbols.
+  if (void* handle = dlopen(module.c_str(), RTLD_NOW | RTLD_GLOBAL)) {
+    using Entry = const FlexmoorMpiRanks* (*)();
+    if (auto entry = reinterpret_cast<Entry>(dlsym(handle, "flexmoor_mpi_ranks"))) return *entry();
   }
-  throw std::runtime_error("started by mpirun, but the MPI module cannot be loaded (" + tried +
-                           ")");
+  const char* why = dlerror();
+  throw std::runtime_error("started by mpirun, but the MPI module cannot be loaded (" +
+                           module.string() + ": " + (why ? why : "no flexmoor_mpi_ranks") + ")");
 }
 
 }  // namespace
