@@ -20,6 +20,7 @@
 #include "apps/case/input/node_table.hpp"
 #include "apps/case/input/yaml_input.hpp"
 #include "apps/problem/case.hpp"
+#include "apps/problem/conditions_spec.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/membrane_element.hpp"
 
@@ -129,12 +130,13 @@ struct CaseBuilder {
   std::map<std::string, std::shared_ptr<const material::MembraneMaterial>> membrane_materials;
   std::vector<PendingSurface> surface_elements;
   std::map<std::string, std::shared_ptr<const model::TimeFunction>> histories;  // null: broken
-  std::set<std::string> broken_rigid_motions;  // rigid_motion histories given with errors
+  std::set<std::string> broken_rigid_motions;        // rigid_motion histories given with errors
   std::map<std::string, std::vector<int>> surfaces;  // nodes by name; broken: broken_node_names
   // Type of each element in file order ("cable", "spring", "point_mass", "membrane",
   // "axisymmetric_membrane", "hoop_cable"; "" when broken).
   std::vector<std::string> element_types;
   std::vector<ElementOrigin> element_origin;  // of each element, like element_types
+  ConditionsSpec conditions;  // supports:, loads: and the planar models' fixed y (read_conditions)
   // The support that fixed each dof first (3 * node + component -> line), to refuse a second
   // one that prescribes another value.
   std::unordered_map<long long, int> support_line;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "apps/case/build/build_conditions.hpp"
 #include "apps/case/case_builder.hpp"
 #include "apps/case/input/nearest_names.hpp"
 #include "apps/case/input/yaml_load.hpp"
@@ -131,6 +132,7 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   readFigure(b, section("figure"));
   if (series) readForeignSeries(b, *series);
 
+  buildConditions(b.conditions, *c.model);
   c.model->numberEquations();
   if (diag.empty()) {
     if (c.model->elementCount() == 0)

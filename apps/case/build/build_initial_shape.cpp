@@ -171,7 +171,8 @@ double submergedWeightPerLength(const CaseBuilder& b, const SectionSpec& section
     const double d = section.hydro->coefficients.diameter;
     buoyancy = b.hydro.water.density * M_PI * d * d / 4.0;
   }
-  return b.model.gravity().norm() * (section.section.density * section.section.area - buoyancy);
+  return b.conditions.gravityVector().norm() *
+         (section.section.density * section.section.area - buoyancy);
 }
 
 void buildInitialShapes(CaseBuilder& b) {

@@ -140,7 +140,8 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
           {"axisymmetric_membrane", section_name,
            element::makeAxisymmetricMembrane(nodes, section, s.section->quadrature)});
     }
-    for (int node : maker.nodes()) b.model.constrain(node, 1);  // y carries nothing
+    for (int node : maker.nodes())  // y carries nothing
+      b.conditions.supports.push_back({node, 1, 0.0, nullptr, 0});
   } else {
     for (int j = 0; j < s.divisions[1]; ++j)
       for (int i = 0; i < s.divisions[0]; ++i) {

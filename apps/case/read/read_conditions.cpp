@@ -1,5 +1,6 @@
-// supports: and loads: of a case file. Prescribed displacements and static loads are reached at
-// load factor 1 (the steps move the load factor).
+// supports: and loads: of a case file, into the case's ConditionsSpec (apps/problem/
+// conditions_spec.hpp). Prescribed displacements and static loads are reached at load factor 1
+// (the steps move the load factor).
 #include <algorithm>
 
 #include "apps/case/case_builder.hpp"
@@ -71,19 +72,22 @@ void readSupport(CaseBuilder& b, const YAML::Node& item, const std::string& path
     for (size_t i = 0; i < fix->size(); ++i) {
       const int k = (*fix)[i];
       const auto [first, added] = b.support_line.emplace(3LL * node + k, lineOf(item));
-      const bool same =
-          b.model.prescribed(node, k) == (*values)[i] && b.model.motion(node, k) == history.get();
-      if (!added && !same && !reported) {
+      if (added) {
+        b.conditions.supports.push_back({node, k, (*values)[i], history, lineOf(item)});
+        continue;
+      }
+      const SupportSpec& earlier = *b.conditions.support(node, k);
+      const bool same = earlier.displacement == (*values)[i] && earlier.history == history;
+      if (!same && !reported) {
         b.diag.error(item, path + ": node " + std::to_string(b.c.node_ids[node]) + " " + kAxis[k] +
                                " is prescribed twice, differently (got " +
                                formatNumber((*values)[i]) + (history ? " with a history" : "") +
-                               " here and " + formatNumber(b.model.prescribed(node, k)) +
-                               (b.model.motion(node, k) ? " with a history" : "") + " on line " +
+                               " here and " + formatNumber(earlier.displacement) +
+                               (earlier.history ? " with a history" : "") + " on line " +
                                std::to_string(first->second) +
                                ", expected one prescribed displacement a dof)");
         reported = true;
       }
-      if (added) b.model.constrain(node, k, (*values)[i], history);
     }
 }
 
@@ -95,7 +99,7 @@ void readNodalLoad(CaseBuilder& b, const YAML::Node& item, const std::string& pa
       force_node ? b.in.vector3(*force_node, f.path("force"), kind::kForce) : std::nullopt;
   const auto [history_ok, history] = optionalHistory(b, f);
   if (!nodes || !force || !history_ok) return;
-  for (int node : *nodes) b.model.addNodalLoad(node, *force, history);
+  for (int node : *nodes) b.conditions.nodal_loads.push_back({node, *force, history});
 }
 
 }  // namespace
@@ -135,7 +139,7 @@ void readPressure(CaseBuilder& b, const YAML::Node& item, const std::string& pat
   const auto [history_ok, history] = optionalHistory(b, f);
   const auto elements = on ? surfaceMembranes(b, *on, f.path("on")) : std::nullopt;
   if (!elements || !pressure || !history_ok) return;
-  b.model.addPressure({*elements, *pressure, history});
+  b.conditions.pressures.push_back({*elements, *pressure, history});
 }
 
 // The incident wave pressure of the sea on the membranes of surfaces (built with the ocean,
@@ -163,7 +167,7 @@ void readGravity(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
     auto value =
         g ? b.in.quantity(*g, f.path("g"), kind::kAcceleration, Limit::NonNegative) : std::nullopt;
     if (value && !inPhysicalRange(b.in, *g, f.path("g"), *value, kGravityRange)) value.reset();
-    if (value) b.model.setGravity(Eigen::Vector3d(0.0, 0.0, -*value));
+    if (value) b.conditions.gravity = Eigen::Vector3d(0.0, 0.0, -*value);
     b.gravity_given = value.has_value();
     return;
   }
@@ -172,7 +176,7 @@ void readGravity(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
                             "a magnitude of " + formatNumber(g->norm()) + " " +
                                 unitNames(b.in.units).length + "/s^2"))
     g.reset();
-  if (g) b.model.setGravity(*g);
+  if (g) b.conditions.gravity = *g;
   b.gravity_given = g.has_value();
 }
 

@@ -27,7 +27,7 @@ std::optional<double> fluidDensity(CaseBuilder& b, const EnclosedFluidSpec& s) {
 // The magnitude of the case's gravity, which must act along -z (the liquid's pressure grows
 // downwards); 0 without gravity.
 std::optional<double> fluidGravity(CaseBuilder& b, const EnclosedFluidSpec& s) {
-  const Eigen::Vector3d& g = b.model.gravity();
+  const Eigen::Vector3d g = b.conditions.gravityVector();
   if (g.isZero(0.0)) return 0.0;
   if (g.z() < 0.0 && std::hypot(g.x(), g.y()) <= 1e-12 * g.norm()) {
     if (s.at_z) return g.norm();

@@ -30,7 +30,7 @@ std::string lengthUnit(const CaseBuilder& b) { return unitNames(b.c.units).lengt
 // z is up); standard gravity when the case gives none.
 std::optional<double> waterGravity(CaseBuilder& b, int line) {
   if (!b.gravity_given) return standardGravity(b.in.units);
-  const Eigen::Vector3d& g = b.model.gravity();
+  const Eigen::Vector3d g = b.conditions.gravityVector();
   const bool down = g.z() < 0.0 && std::hypot(g.x(), g.y()) <= 1e-12 * g.norm();
   if (down) return g.norm();
   b.diag.error(line, "water: needs gravity pointing down (got loads.gravity [" +

@@ -253,7 +253,7 @@ std::unique_ptr<element::Element> readAxisymmetricMembrane(CaseBuilder& b, Field
   const YAML::Node* s = f.require("section");
   const SectionSpec* section = s ? b.section(*s, f.path("section"), SectionUse::Membrane) : nullptr;
   if (!nodes || !section) return nullptr;
-  for (int node : *nodes) b.model.constrain(node, 1);
+  for (int node : *nodes) b.conditions.supports.push_back({node, 1, 0.0, nullptr, 0});
   return element::makeAxisymmetricMembrane(*nodes, section->membrane, section->quadrature);
 }
 

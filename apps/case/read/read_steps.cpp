@@ -237,7 +237,7 @@ void readRelease(CaseBuilder& b, Fields& f, StepSpec& step) {
     for (int node : *nodes)
       for (int k : *dofs) {
         const std::pair<int, int> dof{node, k};
-        const bool held = b.model.isConstrained(node, k) && !b.released.count(dof);
+        const bool held = b.conditions.held(node, k) && !b.released.count(dof);
         if (!held) {
           b.diag.error(items[i],
                        r.path() + ": node " + std::to_string(b.c.node_ids[node]) + " " + "xyz"[k] +

@@ -202,14 +202,13 @@ std::optional<int> elementRef(CaseBuilder& b, const YAML::Node& n, const std::st
 // A reaction is zero at a free dof: asking for one there is a mistake.
 bool checkReaction(CaseBuilder& b, const YAML::Node& n, const std::string& path,
                    const SummarySpec& s) {
-  const model::Model& m = b.model;
-  if (s.quantity == Quantity::Reaction && !m.isConstrained(s.node, s.component)) {
+  const ConditionsSpec& m = b.conditions;
+  if (s.quantity == Quantity::Reaction && !m.held(s.node, s.component)) {
     b.diag.error(n, path + ": the reaction is zero (got a node whose " + "xyz"[s.component] +
                         " is free, expected a fixed dof)");
     return false;
   }
-  const bool any =
-      m.isConstrained(s.node, 0) || m.isConstrained(s.node, 1) || m.isConstrained(s.node, 2);
+  const bool any = m.held(s.node, 0) || m.held(s.node, 1) || m.held(s.node, 2);
   const bool magnitude =
       s.quantity == Quantity::ReactionMagnitude || s.quantity == Quantity::ReactionHorizontal;
   if (magnitude && !any) {
@@ -386,21 +385,22 @@ bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path
     s.element_weights.push_back(w);
   }
   const std::vector<int>& nodes = b.c.lines.at(*name);
-  const model::Model& m = b.model;
-  const auto height = [&m](int node) {  // where its supports put it, at load factor 1
-    return m.reference()(2, node) + (m.isConstrained(node, 2) ? m.prescribed(node, 2) : 0.0);
+  const model::NodalField& X = b.model.reference();
+  const ConditionsSpec& held = b.conditions;
+  const auto height = [&](int node) {  // where its supports put it, at load factor 1
+    return X(2, node) + held.prescribed(node, 2);
   };
   const int lower = height(nodes.front()) <= height(nodes.back()) ? nodes.front() : nodes.back();
   // A raised anchor holds the part hanging from it, not the laid part's end: its reaction is not
   // the bed's.
-  const double bed = b.hydro.bed.height(m.reference()(0, lower) + m.prescribed(lower, 0),
-                                        m.reference()(1, lower) + m.prescribed(lower, 1));
+  const double bed = b.hydro.bed.height(X(0, lower) + held.prescribed(lower, 0),
+                                        X(1, lower) + held.prescribed(lower, 1));
   const bool at_bed = height(lower) <= bed + positionTolerance(b);
-  s.node = m.isConstrained(lower, 2) && at_bed ? lower : -1;
+  s.node = held.held(lower, 2) && at_bed ? lower : -1;
   // The weight of the element at the anchor, for the anchor's share of the laid weight.
   s.weight_per_length = s.element_weights.front();
   for (size_t i = 0; i < s.elements.size(); ++i) {
-    const std::vector<int>& ends = m.element(s.elements[i]).nodes();
+    const std::vector<int>& ends = b.model.element(s.elements[i]).nodes();
     if (ends.front() == lower || ends.back() == lower) s.weight_per_length = s.element_weights[i];
   }
   return true;
