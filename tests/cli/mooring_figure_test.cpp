@@ -6,23 +6,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "tests/support/case_files.hpp"
 #include "tests/support/cli_run.hpp"
 #include "tests/support/netcdf_reader.hpp"
 
 namespace flexmoor::test {
 namespace {
 
-std::string shipped(const std::string& name) {
-  std::ifstream in(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/ocean/" + name + ".yaml");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string shipped(const std::string& name) { return shippedCaseText("ocean/" + name); }
 
 // The lines of the mooring figure's axes `axes` (0: the tensions, 1: the profiles when the run
 // has time records), x then y of each, as numbers.

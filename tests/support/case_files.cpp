@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "apps/case/case_reader.hpp"
 #include "apps/problem/case_error.hpp"
@@ -10,6 +11,13 @@
 namespace flexmoor::test {
 
 namespace fs = std::filesystem;
+
+std::string shippedCaseText(const std::string& folder_and_name) {
+  std::ifstream in(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/" + folder_and_name + ".yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 std::string writeCase(const std::string& file_name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / "flexmoor-case-reader";

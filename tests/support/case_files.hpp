@@ -5,6 +5,10 @@
 
 namespace flexmoor::test {
 
+// The text of a shipped case, `folder/name` under the source's cases/ ("ocean/oc4-semi-surge");
+// empty when it cannot be read.
+std::string shippedCaseText(const std::string& folder_and_name);
+
 // Writes `text` to a scratch directory as `file_name` and returns its path.
 std::string writeCase(const std::string& file_name, const std::string& text);
 

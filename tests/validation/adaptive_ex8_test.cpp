@@ -8,21 +8,13 @@
 // - in at most 0.9 of the fixed 0.005 s step's Newton iterations (measured 1,178 against 1,391).
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "tests/support/case_files.hpp"
 #include "tests/support/in_process_run.hpp"
 
 namespace flexmoor::test {
 namespace {
-
-std::string caseText(const std::string& name) {
-  std::ifstream in(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/seed/" + name + ".yaml");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The dynamic step's Newton iterations, from its log line "N time steps, M Newton iterations, ..."
 // (the relaxation before it reports its own).
@@ -34,7 +26,7 @@ long dynamicIterations(const std::string& log) {
 }
 
 TEST(AdaptiveStepsExample8, StretchWavePeakWithinTheConvergedRunAtLessCost) {
-  const std::string shipped_text = caseText("ex8-relaxation-test");
+  const std::string shipped_text = shippedCaseText("seed/ex8-relaxation-test");
   const std::string fixed = "dt: 0.005 s, steps: 600,";
   const size_t at = shipped_text.find(fixed);
   ASSERT_NE(at, std::string::npos);
@@ -43,7 +35,7 @@ TEST(AdaptiveStepsExample8, StretchWavePeakWithinTheConvergedRunAtLessCost) {
   const InProcessRun reference = runCaseInProcess("ex8-reference", reference_text);
   const InProcessRun shipped = runCaseInProcess("ex8-shipped", shipped_text);
   const InProcessRun adaptive =
-      runCaseInProcess("ex8-adaptive", caseText("ex8-relaxation-test-adaptive"));
+      runCaseInProcess("ex8-adaptive", shippedCaseText("seed/ex8-relaxation-test-adaptive"));
   ASSERT_EQ(reference.exit_code, app::kSuccess) << reference.log;
   ASSERT_EQ(shipped.exit_code, app::kSuccess) << shipped.log;
   ASSERT_EQ(adaptive.exit_code, app::kSuccess) << adaptive.log;

@@ -12,21 +12,15 @@
 //   first solve took the contact's matrices at the step's start instead of at the predictor).
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "tests/support/case_files.hpp"
 #include "tests/support/in_process_run.hpp"
 
 namespace flexmoor::test {
 namespace {
 
-std::string shippedCase() {
-  std::ifstream in(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/ocean/oc4-semi-surge.yaml");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+std::string shippedCase() { return shippedCaseText("ocean/oc4-semi-surge"); }
 
 // The text with `from` (which must be there) replaced by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -52,8 +46,8 @@ InProcessRun fixedStep(const std::string& name, const std::string& dt, int steps
 
 // The case's first 200 s with its steps chosen by their accuracy; `keys` after `output:`.
 InProcessRun adaptive(const std::string& name, const std::string& keys) {
-  const std::string text = replaced(shippedCase(), "dt: 0.1 s, steps: 6000,",
-                                    "duration: 200 s, output: 0.1 s," + keys);
+  const std::string text =
+      replaced(shippedCase(), "dt: 0.1 s, steps: 6000,", "duration: 200 s, output: 0.1 s," + keys);
   return runCaseInProcess(name, replaced(text, ", output_every: 1}", "}"));
 }
 
