@@ -97,7 +97,7 @@ class Simulation {
     check(h, code);
   }
 
-  void couple(const std::string& body) { check(h(), flexmoor_couple(h(), body.c_str())); }
+  void couple(const std::string& name) { check(h(), flexmoor_couple(h(), name.c_str())); }
   void output(const py::object& directory) {
     check(h(), flexmoor_set_output(h(), fspath(directory).c_str()));
   }
@@ -223,7 +223,7 @@ PYBIND11_MODULE(flexmoor, m) {
   m.doc() =
       "flexmoor: nonlinear finite-element mooring lines and cables, run or stepped by a host.\n\n"
       "Simulation(case) reads a case (a path, a named case or a dict of the YAML case format);\n"
-      "run() runs it as `flexmoor run` does; or couple(body), init(x, xd), step(x, xd, dt) ...,\n"
+      "run() runs it as `flexmoor run` does; or couple(name), init(x, xd), step(x, xd, dt) ...,\n"
       "finish() step it with the host's motions (docs/library.md states the semantics).";
   m.attr("__version__") = flexmoor_version();
   static py::exception<std::runtime_error> base(m, "Error");
@@ -240,8 +240,9 @@ PYBIND11_MODULE(flexmoor, m) {
   py::class_<Simulation>(m, "Simulation")
       .def(py::init<const py::object&>(), py::arg("case"),
            "Reads and checks a case: a path, a named case ('oc4-semi-surge') or a dict.")
-      .def("couple", &Simulation::couple, py::arg("body"),
-           "The host drives this rigid body (six dofs: surge, sway, heave, roll, pitch, yaw).")
+      .def("couple", &Simulation::couple, py::arg("name"),
+           "The host drives this rigid body (six dofs: surge, sway, heave, roll, pitch, yaw) or "
+           "point (a line's end, 'LINE.fairlead': three dofs, its position x, y, z).")
       .def("output", &Simulation::output, py::arg("directory"),
            "Write the results files into this directory (at finish or run).")
       .def_property_readonly("coupled_dofs", &Simulation::coupledDofs)

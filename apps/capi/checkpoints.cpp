@@ -61,7 +61,8 @@ int flexmoor_restore_file(flexmoor_t handle, const char* path) {
     // Checked before anything is restored: a file of other bodies leaves the handle as it was.
     const app::Simulation::CheckpointHost check = [&](const std::vector<double>& host) {
       if (host.size() != 5 * samples + 3)
-        throw std::runtime_error(std::string(path) + ": its coupled bodies are not this handle's");
+        throw std::runtime_error(std::string(path) +
+                                 ": its coupled bodies and points are not this handle's");
     };
     const std::vector<double> host = h.simulation->restoreFile(path, check);
     std::vector<model::CoupledMotion::Sample> restored;

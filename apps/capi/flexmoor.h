@@ -10,7 +10,7 @@
  *
  * Life cycle:
  *   flexmoor_create(path, &h)            read and check the case (its errors: FLEXMOOR_BAD_INPUT)
- *   flexmoor_couple(h, "platform")       optional: the host drives that rigid body
+ *   flexmoor_couple(h, "platform")       optional: the host drives that rigid body (or point)
  *   flexmoor_set_output(h, dir)          optional: write the results files into dir
  *   flexmoor_init(h, n, x, xd)           the coupled dofs' start; statics; the dynamic step starts
  *   flexmoor_step(h, n, x, xd, xdd, f, &t, dt)   as often as the host likes
@@ -21,10 +21,14 @@
  * Coupled dofs. A coupled body (flexmoor_couple: a spread mooring's `platform`, or a history of
  * type rigid_motion) has six, in this order: surge, sway, heave (the translation of its
  * reference point from where the case puts it at rest, in the case's length unit) and roll,
- * pitch, yaw (rad; the rotation R = Rz(yaw) Ry(pitch) Rx(roll)). Velocities and accelerations
- * are their time derivatives. The loads returned, six per body, are the force of the lines on
- * the body (x, y, z, the case's force unit) and its moment about the body's reference point
- * where the body is (x, y, z).
+ * pitch, yaw (rad; the rotation R = Rz(yaw) Ry(pitch) Rx(roll)). A coupled point (a line's end:
+ * "LINE.fairlead", "LINE.anchor", "LINE.start", "LINE.end", held in x, y and z by the case's
+ * supports) has three: its position x, y, z in the case's frame and length unit, as MoorDyn's
+ * coupled points; the host's motion replaces what the supports prescribed there. Velocities and
+ * accelerations are their time derivatives. The dofs of what is coupled follow one another in
+ * the order of the flexmoor_couple calls. The loads returned, six per body, are the force of the
+ * lines on the body (x, y, z, the case's force unit) and its moment about the body's reference
+ * point where the body is (x, y, z); three per point, the force of the lines on the point.
  *
  * A step's semantics. flexmoor_step(h, n, x, xd, xdd, f, &t, dt) takes the simulation from time t
  * (the time it has reached) to t + dt. x, xd (and xdd, when not NULL) are the coupled dofs'
@@ -80,7 +84,8 @@ int flexmoor_set_logger(flexmoor_t handle, flexmoor_log_function log, void* user
  * flexmoor_finish as `flexmoor run -o DIRECTORY` writes them; by default none. Before init. */
 int flexmoor_set_output(flexmoor_t handle, const char* directory);
 
-/* The host drives rigid body `name` (its six dofs above), in the order of the calls; before init. */
+/* The host drives rigid body or point `name` (its six or three dofs above), in the order of the
+ * calls; before init. A point a coupled body carries cannot be coupled too. */
 int flexmoor_couple(flexmoor_t handle, const char* name);
 /* The number of coupled dofs: 6 per coupled body. */
 int flexmoor_coupled_dofs(flexmoor_t handle, int* count);

@@ -98,11 +98,11 @@ void requireState(const flexmoor_simulation& h, const char* call) {
 }
 
 void requireCount(const flexmoor_simulation& h, int count, const char* call) {
-  const int dofs = app::CoupledBodies::kDofs * static_cast<int>(h.coupled_names.size());
+  int dofs = 0;
+  for (int n : h.coupled_dofs) dofs += n;
   require(count == dofs, std::string(call) + ": " + std::to_string(count) +
                              " coupled values (expected " + std::to_string(dofs) +
-                             ": 6 for each "
-                             "coupled body)");
+                             ": 6 for each coupled body, 3 for each coupled point)");
 }
 
 }  // namespace flexmoor::capi

@@ -11,7 +11,7 @@
 
 #include "apps/capi/flexmoor.h"
 #include "apps/capi/log_lines.hpp"
-#include "apps/host/coupled_bodies.hpp"
+#include "apps/host/coupling.hpp"
 #include "apps/problem/case.hpp"
 #include "apps/problem/case_error.hpp"
 #include "apps/run/case_run.hpp"
@@ -35,7 +35,8 @@ struct flexmoor_simulation {
   flexmoor::capi::LogStream log{0}, diag{1};
   std::unique_ptr<flexmoor::app::Case> c;
   std::vector<std::string> coupled_names;
-  std::unique_ptr<flexmoor::app::CoupledBodies> bodies;
+  std::vector<int> coupled_dofs;  // of each of coupled_names
+  std::unique_ptr<flexmoor::app::Coupling> bodies;
   std::optional<std::string> output_dir;
   std::unique_ptr<flexmoor::app::CaseRun> run;      // with results files
   std::unique_ptr<flexmoor::app::Simulation> bare;  // without

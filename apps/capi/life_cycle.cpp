@@ -1,4 +1,4 @@
-// The life cycle of flexmoor.h: create, set up (logger, output, coupled bodies), init, step,
+// The life cycle of flexmoor.h: create, set up (logger, output, coupled bodies and points), init, step,
 // finish, or run whole.
 #include <cmath>
 #include <string>
@@ -88,13 +88,15 @@ int flexmoor_couple(flexmoor_t handle, const char* name) {
     requirePhase(h, flexmoor_simulation::Phase::Created, "flexmoor_couple");
     require(h.c != nullptr, "flexmoor_couple: the case was not read");
     require(name != nullptr, "flexmoor_couple: a null name");
-    require(h.c->rigid_motions.count(name),
-            std::string("flexmoor_couple: no rigid motion named '") + name + "' in case " +
-                h.c->name + " (its rigid motions: " + app::rigidMotionNames(*h.c) + ")");
     for (const std::string& n : h.coupled_names)
       require(n != name, std::string("flexmoor_couple: '") + name + "' is coupled already");
     std::vector<std::string> names = h.coupled_names;
     names.push_back(name);
+    try {
+      h.coupled_dofs = app::Coupling::dofsOf(*h.c, names);
+    } catch (const std::invalid_argument& e) {
+      throw BadCall(std::string("flexmoor_couple: ") + e.what());
+    }
     h.coupled_names = names;
     return FLEXMOOR_OK;
   });
@@ -103,7 +105,8 @@ int flexmoor_couple(flexmoor_t handle, const char* name) {
 int flexmoor_coupled_dofs(flexmoor_t handle, int* count) {
   return guarded(handle, [&](flexmoor_simulation& h) {
     require(count != nullptr, "flexmoor_coupled_dofs: a null count");
-    *count = app::CoupledBodies::kDofs * static_cast<int>(h.coupled_names.size());
+    *count = 0;
+    for (int n : h.coupled_dofs) *count += n;
     return FLEXMOOR_OK;
   });
 }
@@ -118,7 +121,7 @@ int flexmoor_init(flexmoor_t handle, int count, const double* x, const double* x
     for (const std::string& w : h.c->warnings) h.diag.stream << w << "\n";
     // From here a failure leaves the handle unusable but for its message and close.
     h.phase = flexmoor_simulation::Phase::Broken;
-    h.bodies = std::make_unique<app::CoupledBodies>(*h.c, h.coupled_names);
+    h.bodies = std::make_unique<app::Coupling>(*h.c, h.coupled_names);
     h.bodies->hold(h.c->model->startState().time, x, xd, nullptr);
     if (h.output_dir) {
       app::RunOptions options;
@@ -191,9 +194,10 @@ int flexmoor_run(flexmoor_t handle) {
   return guarded(handle, [&](flexmoor_simulation& h) {
     requirePhase(h, flexmoor_simulation::Phase::Created, "flexmoor_run");
     require(h.c != nullptr, "flexmoor_run: the case was not read (see flexmoor_create)");
-    require(h.coupled_names.empty(),
-            "flexmoor_run: a body is coupled (a run follows the case's own motions; step it "
-            "with flexmoor_init and flexmoor_step instead)");
+    require(
+        h.coupled_names.empty(),
+        "flexmoor_run: a body or point is coupled (a run follows the case's own motions; step it "
+        "with flexmoor_init and flexmoor_step instead)");
     for (const std::string& w : h.c->warnings) h.diag.stream << w << "\n";
     h.phase = flexmoor_simulation::Phase::Finished;
     if (h.output_dir) {

@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -293,6 +295,72 @@ TEST(CApi, LoadsOnABodyAreThePullOfWhatHangsFromItAndItsMoment) {
   EXPECT_NEAR(hook[0], 10.0 * std::cos(pitch), 1e-12);  // the hook where the pitch put it
   EXPECT_NEAR(hook[2], -10.0 * std::sin(pitch), 1e-12);
   flexmoor_close(h);
+}
+
+// Check CA9. OC4's three fairleads coupled as points, moved by the host as the platform's surge
+// moves them (x = the fairlead's place + s(t), surge only: s = 2 sin(2 pi t / 10 s) m brought in
+// over 10 s), give the run of the coupled platform: each point's load is its line's pull, whose
+// sum is the platform's force (1e-11 of the largest, measured 1.7e-12), and line 1's fairlead
+// tension follows (1e-11 relative, measured 9.4e-13): the two differ by the round-off of a point's
+// place plus its motion less its place. Coupling mistakes are codes with messages:
+// a line's middle, an unknown line, a point the coupled platform carries.
+TEST(CApi, CoupledFairleadPointsMoveAsThePlatformThatCarriesThem) {
+  const double place[9] = {20.434, 35.393, -14.0, -40.868, 0.0, -14.0, 20.434, -35.393, -14.0};
+  const auto surge = [](double t, double& s, double& ds) {
+    const double pi = std::acos(-1.0), r = std::min(1.0, t / 10.0), dr = t < 10.0 ? 0.1 : 0.0;
+    s = r * 2.0 * std::sin(2 * pi * t / 10.0);
+    ds = dr * 2.0 * std::sin(2 * pi * t / 10.0) +
+         r * 2.0 * (2 * pi / 10.0) * std::cos(2 * pi * t / 10.0);
+  };
+  flexmoor_t body = nullptr, points = nullptr;
+  ASSERT_EQ(flexmoor_create("oc4-semi-surge", &body), FLEXMOOR_OK) << flexmoor_last_error(body);
+  ASSERT_EQ(flexmoor_couple(body, "platform"), FLEXMOOR_OK) << flexmoor_last_error(body);
+  EXPECT_EQ(flexmoor_couple(body, "line_1.fairlead"), FLEXMOOR_BAD_CALL);
+  EXPECT_TRUE(contains(flexmoor_last_error(body), "is carried by the coupled body 'platform'"))
+      << flexmoor_last_error(body);
+  ASSERT_EQ(flexmoor_create("oc4-semi-surge", &points), FLEXMOOR_OK) << flexmoor_last_error(points);
+  EXPECT_EQ(flexmoor_couple(points, "line_1.middle"), FLEXMOOR_BAD_CALL);
+  EXPECT_TRUE(contains(flexmoor_last_error(points), "not an end of line line_1"))
+      << flexmoor_last_error(points);
+  EXPECT_EQ(flexmoor_couple(points, "line_9.fairlead"), FLEXMOOR_BAD_CALL);
+  EXPECT_TRUE(contains(flexmoor_last_error(points), "no line named 'line_9'"))
+      << flexmoor_last_error(points);
+  for (const char* name : {"line_1.fairlead", "line_2.fairlead", "line_3.fairlead"})
+    ASSERT_EQ(flexmoor_couple(points, name), FLEXMOOR_OK) << flexmoor_last_error(points);
+  int dofs = 0;
+  ASSERT_EQ(flexmoor_coupled_dofs(points, &dofs), FLEXMOOR_OK);
+  ASSERT_EQ(dofs, 9);
+
+  double xb[6] = {0, 0, 0, 0, 0, 0}, vb[6] = {0, 0, 0, 0, 0, 0}, xp[9], vp[9] = {};
+  std::copy(place, place + 9, xp);
+  ASSERT_EQ(flexmoor_init(body, 6, xb, vb), FLEXMOOR_OK) << flexmoor_last_error(body);
+  ASSERT_EQ(flexmoor_init(points, 9, xp, vp), FLEXMOOR_OK) << flexmoor_last_error(points);
+  double tb = 0.0, tp = 0.0, fb[6], fp[9], worst_force = 0.0, worst_tension = 0.0;
+  for (int n = 1; n <= 200; ++n) {
+    double s, ds;
+    surge(0.1 * n, s, ds);
+    xb[0] = s, vb[0] = ds;
+    for (int p = 0; p < 3; ++p) xp[3 * p] = place[3 * p] + s, vp[3 * p] = ds;
+    ASSERT_EQ(flexmoor_step(body, 6, xb, vb, nullptr, fb, &tb, 0.1), FLEXMOOR_OK)
+        << flexmoor_last_error(body);
+    ASSERT_EQ(flexmoor_step(points, 9, xp, vp, nullptr, fp, &tp, 0.1), FLEXMOOR_OK)
+        << flexmoor_last_error(points);
+    const double scale = Eigen::Map<const Eigen::VectorXd>(fp, 9).cwiseAbs().maxCoeff();
+    for (int k = 0; k < 3; ++k)
+      worst_force = std::max(worst_force, std::abs(fp[k] + fp[3 + k] + fp[6 + k] - fb[k]) / scale);
+    double tension_b = 0.0, tension_p = 0.0;
+    ASSERT_EQ(flexmoor_line_end_tension(body, 0, 1, &tension_b), FLEXMOOR_OK);
+    ASSERT_EQ(flexmoor_line_end_tension(points, 0, 1, &tension_p), FLEXMOOR_OK);
+    worst_tension = std::max(worst_tension, std::abs(tension_p / tension_b - 1.0));
+  }
+  RecordProperty("worst_force", std::to_string(worst_force));
+  RecordProperty("worst_tension", std::to_string(worst_tension));
+  EXPECT_LT(worst_force, 1e-11);
+  EXPECT_LT(worst_tension, 1e-11);
+  std::cout << "[ CApi ] points against the body: force " << worst_force << ", tension "
+            << worst_tension << "\n";
+  flexmoor_close(body);
+  flexmoor_close(points);
 }
 
 }  // namespace
