@@ -3,8 +3,10 @@
 // each: read_materials.cpp, read_mesh.cpp, read_surfaces.cpp, node_refs.cpp, read_histories.cpp,
 // read_conditions.cpp, read_enclosed_fluid.cpp, read_hydro.cpp, read_steps.cpp, read_summary.cpp,
 // read_output.cpp, read_figure.cpp) and by what builds and checks the model after them (build/,
-// check/): the Case they fill (apps/problem/case.hpp) and what they read but the model takes
-// later (the lines' cables, the surfaces' elements, the bodies' masses).
+// check/): the Case they fill (apps/problem/case.hpp), the specifications of its mesh and
+// conditions that the model is built from once the file is read (apps/problem/mesh_spec.hpp,
+// conditions_spec.hpp), and what is read before its place in them is known (the lines' cables,
+// the surfaces' elements, the bodies' masses).
 // A name defined with errors is remembered as broken, so that what refers to it is not reported
 // again.
 #include <functional>
@@ -21,6 +23,8 @@
 #include "apps/case/input/yaml_input.hpp"
 #include "apps/problem/case.hpp"
 #include "apps/problem/conditions_spec.hpp"
+#include "apps/problem/mesh_spec.hpp"
+#include "libhydro/loads/enclosed_fluid.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/membrane_element.hpp"
 
@@ -52,7 +56,7 @@ struct ElementOrigin {
 struct PendingElement {
   std::string type;
   std::string section;
-  std::unique_ptr<element::Element> element;
+  ElementSpec element;
 };
 
 // The elements of one surface (read_surfaces.cpp, surface_mesh.cpp); added after the lines'
@@ -63,7 +67,7 @@ struct PendingSurface {
   std::vector<PendingElement> elements;
 };
 
-// A cable element a line generates; added to the model after the explicit elements.
+// A cable element a line generates; added to the mesh after the explicit elements.
 struct PendingCable {
   std::vector<int> nodes;
   std::string section;
@@ -74,7 +78,7 @@ struct PendingCable {
 };
 
 // The mass of one item of `bodies:` (its mass: or weight:, read_hydro.cpp): a point_mass element
-// at its node, added to the model after the ocean sections are read.
+// at its node, added to the mesh after the ocean sections are read.
 struct PendingPointMass {
   int node = -1;
   double mass = 0.0;
@@ -95,14 +99,16 @@ struct InitialShapeSpec {
 };
 
 // One item of `loads: enclosed_fluid:` as read (read_enclosed_fluid.cpp): the liquid in the
-// membranes of `on:`; its density is resolved and it is put on the model once the water is read.
+// membranes of `on:`; its density and gravity are resolved once the water is read, and it is put
+// on the model once that is built (build_enclosed_fluid.cpp).
 struct EnclosedFluidSpec {
   std::vector<int> elements;
   std::optional<double> density, specific_gravity;  // exactly one of them
   double pressure = 0.0;
   std::optional<double> at_z;
   int line = 0;
-  std::string where;  // "loads.enclosed_fluid[0]"
+  std::string where;                          // "loads.enclosed_fluid[0]"
+  std::optional<hydro::EnclosedFluid> fluid;  // resolved; nullopt when that failed (reported)
 };
 
 struct CaseBuilder {
@@ -136,6 +142,7 @@ struct CaseBuilder {
   // "axisymmetric_membrane", "hoop_cable"; "" when broken).
   std::vector<std::string> element_types;
   std::vector<ElementOrigin> element_origin;  // of each element, like element_types
+  MeshSpec mesh;  // nodes:, lines:, surfaces:, elements: and the bodies' masses (read_mesh.cpp)
   ConditionsSpec conditions;  // supports:, loads: and the planar models' fixed y (read_conditions)
   // The support that fixed each dof first (3 * node + component -> line), to refuse a second
   // one that prescribes another value.
@@ -183,11 +190,15 @@ void readLoads(CaseBuilder& b, const YAML::Node& n);
 // water:, waves:, current:, seabed: and bodies: of the top-level map, into b.hydro; a body's mass
 // into b.body_masses. Also refuses a section's hydro: without water.
 void readOcean(CaseBuilder& b, const Fields& top);
-// One item of `loads: enclosed_fluid:`, and the liquids of them all put on the model (their
-// pressure and lumped mass, libhydro/loads/enclosed_fluid.hpp) after readOcean
+// One item of `loads: enclosed_fluid:`, and the liquids of them all resolved after readOcean:
+// their density and gravity, and the element entries of their lumped masses
 // (read_enclosed_fluid.cpp).
 void readEnclosedFluid(CaseBuilder& b, const YAML::Node& item, const std::string& path);
-void addEnclosedFluids(CaseBuilder& b);
+void resolveEnclosedFluids(CaseBuilder& b);
+// The liquids put on the built model (their pressure and lumped mass,
+// libhydro/loads/enclosed_fluid.hpp) where their walls enclose them; the others are errors at
+// their items (build_enclosed_fluid.cpp).
+void buildEnclosedFluids(CaseBuilder& b);
 // The membranes of the surfaces that `on:` names (one surface or a list); nullopt when a name is
 // unknown (reported) or broken (read_conditions.cpp).
 std::optional<std::vector<int>> surfaceMembranes(CaseBuilder& b, const YAML::Node& on,

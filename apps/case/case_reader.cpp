@@ -7,12 +7,12 @@
 #include <stdexcept>
 
 #include "apps/case/build/build_conditions.hpp"
+#include "apps/case/build/build_mesh.hpp"
 #include "apps/case/case_builder.hpp"
 #include "apps/case/input/nearest_names.hpp"
 #include "apps/case/input/yaml_load.hpp"
 #include "apps/case/scenarios/scenario.hpp"
 #include "apps/common/data_dir.hpp"
-#include "libstruct/element/spring_element.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -56,7 +56,7 @@ std::vector<fs::path> caseFiles() {
 // surfaces:.
 void addBodyMasses(CaseBuilder& b) {
   for (const PendingPointMass& m : b.body_masses) {
-    b.model.addElement(std::make_unique<element::PointMassElement>(m.node, m.mass));
+    b.mesh.addElement(ElementSpec::pointMass(m.node, m.mass));
     b.element_types.push_back("point_mass");
     b.element_origin.push_back({m.line, m.where, ""});
   }
@@ -125,14 +125,16 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   readLoads(b, section("loads"));
   readOcean(b, top);
   addBodyMasses(b);
-  addEnclosedFluids(b);
+  resolveEnclosedFluids(b);
   if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
   readSummary(b, section("summary"));
   readOutput(b, section("output"));
   readFigure(b, section("figure"));
   if (series) readForeignSeries(b, *series);
 
+  buildMesh(b.mesh, *c.model);
   buildConditions(b.conditions, *c.model);
+  buildEnclosedFluids(b);
   c.model->numberEquations();
   if (diag.empty()) {
     if (c.model->elementCount() == 0)

@@ -5,7 +5,6 @@
 #include <unordered_set>
 
 #include "apps/case/build/node_index.hpp"
-#include "libstruct/element/axisymmetric_membrane.hpp"
 #include "libstruct/shape/quad_shape.hpp"
 #include "libstruct/shape/triangle_shape.hpp"
 
@@ -38,7 +37,7 @@ class SurfaceNodeMaker {
         map_(map),
         divisions_(divisions),
         line_(line),
-        index_(b.model.reference(), 1e-9 * std::max(map.size(), 1e-300)) {}
+        index_(b.mesh.reference, 1e-9 * std::max(map.size(), 1e-300)) {}
 
   // The node at lattice point (u, v), made on first use.
   int node(int u, int v) {
@@ -136,9 +135,9 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
       std::vector<int> nodes;
       for (int k = 0; k <= s.kind.order; ++k)
         nodes.push_back(maker.node(L * e + L * k / s.kind.order, 0));
-      pending.elements.push_back(
-          {"axisymmetric_membrane", section_name,
-           element::makeAxisymmetricMembrane(nodes, section, s.section->quadrature)});
+      pending.elements.push_back({"axisymmetric_membrane", section_name,
+                                  ElementSpec::membrane(ElementSpec::Kind::AxisymmetricMembrane,
+                                                        nodes, section, s.section->quadrature)});
     }
     for (int node : maker.nodes())  // y carries nothing
       b.conditions.supports.push_back({node, 1, 0.0, nullptr, 0});
@@ -176,16 +175,16 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
         for (std::vector<int>& nodes : cells)
           pending.elements.push_back(
               {"membrane", section_name,
-               element::makeMembraneElement(s.kind.triangle ? "triangle" : "quad", std::move(nodes),
-                                            section, s.section->quadrature)});
+               ElementSpec::membrane(s.kind.triangle ? ElementSpec::Kind::MembraneTriangle
+                                                     : ElementSpec::Kind::MembraneQuad,
+                                     std::move(nodes), section, s.section->quadrature)});
       }
   }
   for (const CableRow& row : rows) {
     if (s.map.shape == SurfaceShape::Meridian) {  // a hoop ring at the node of boundary `at`
       const int node = maker.node(L * row.boundary, 0);
-      pending.elements.push_back(
-          {"hoop_cable", b.sectionName(row.section),
-           std::make_unique<element::HoopCable>(node, row.section->section)});
+      pending.elements.push_back({"hoop_cable", b.sectionName(row.section),
+                                  ElementSpec::hoopCable(node, row.section->section)});
       continue;
     }
     const int cells = s.divisions[row.direction];
@@ -198,7 +197,7 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
       if (nodes.front() == nodes.back()) continue;  // a row through the centre of a disc
       pending.elements.push_back(
           {"cable", b.sectionName(row.section),
-           element::makeCableElement(nodes, row.section->section, row.section->quadrature)});
+           ElementSpec::cable(nodes, row.section->section, row.section->quadrature)});
     }
   }
   b.surfaces[s.name] = maker.nodes();

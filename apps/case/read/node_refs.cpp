@@ -41,8 +41,8 @@ std::optional<int> nodeAt(CaseBuilder& b, const YAML::Node& n, const std::string
   if (!x) return std::nullopt;
   int nearest = -1;
   double distance = 0.0;
-  for (int node = 0; node < b.model.nodeCount(); ++node) {
-    const double d = (b.model.reference().col(node) - *x).norm();
+  for (int node = 0; node < b.mesh.nodeCount(); ++node) {
+    const double d = (b.mesh.position(node) - *x).norm();
     if (nearest < 0 || d < distance) std::tie(nearest, distance) = std::pair(node, d);
   }
   if (nearest >= 0 && distance <= positionTolerance(b)) return nearest;
@@ -80,9 +80,9 @@ std::optional<std::vector<int>> nodesWhere(CaseBuilder& b, const YAML::Node& n,
   }
   const double tolerance = positionTolerance(b);
   std::vector<int> nodes;
-  for (int node = 0; node < b.model.nodeCount(); ++node)
+  for (int node = 0; node < b.mesh.nodeCount(); ++node)
     if (std::all_of(tests.begin(), tests.end(), [&](const auto& t) {
-          return std::abs(b.model.reference()(t.first, node) - t.second) <= tolerance;
+          return std::abs(b.mesh.reference(t.first, node) - t.second) <= tolerance;
         }))
       nodes.push_back(node);
   if (nodes.empty())
@@ -128,7 +128,7 @@ std::optional<int> lineNode(CaseBuilder& b, const YAML::Node& n, const std::stri
 }  // namespace
 
 double positionTolerance(const CaseBuilder& b) {
-  const model::NodalField& X = b.model.reference();
+  const model::NodalField& X = b.mesh.reference;
   if (X.cols() == 0) return 0.0;
   const double size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
   return 1e-6 * std::max(size, X.cwiseAbs().maxCoeff());
@@ -178,7 +178,7 @@ std::optional<std::vector<int>> nodeListRef(CaseBuilder& b, const YAML::Node& n,
   if (n.IsScalar()) {
     const std::string& s = n.Scalar();
     if (s == "all") {
-      for (int node = 0; node < b.model.nodeCount(); ++node) nodes.push_back(node);
+      for (int node = 0; node < b.mesh.nodeCount(); ++node) nodes.push_back(node);
       return nodes;
     }
     if (b.broken_node_names.count(s)) return std::nullopt;

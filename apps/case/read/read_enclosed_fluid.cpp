@@ -3,13 +3,14 @@
 //   {on: SURFACE or [SURFACES], density: RHO | specific_gravity: SG, pressure: P, at_z: Z}
 // P is the liquid's gauge pressure at the elevation Z; with gravity it grows by rho_f g per unit
 // depth below Z (at_z is then required). The specific gravity is relative to the water's density.
-// Read with loads:, put on the model after the water (its pressure as a surface load, its mass
-// lumped at the wall's nodes as point_mass elements without weight).
+// Read with loads:, resolved after the water; put on the model once it is built
+// (build_enclosed_fluid.cpp): its pressure as a surface load, its mass lumped at the wall's nodes
+// as point_mass elements without weight.
 #include <cmath>
+#include <set>
 
 #include "apps/case/case_builder.hpp"
 #include "apps/common/format_number.hpp"
-#include "libhydro/loads/enclosed_fluid.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -40,38 +41,6 @@ std::optional<double> fluidGravity(CaseBuilder& b, const EnclosedFluidSpec& s) {
                            formatNumber(g.x()) + ", " + formatNumber(g.y()) + ", " +
                            formatNumber(g.z()) + "], expected [0, 0, -g] with g > 0: z is up)");
   return std::nullopt;
-}
-
-// Whether the membranes enclose a volume the liquid can fill.
-bool checkEnclosure(CaseBuilder& b, const EnclosedFluidSpec& s, const hydro::Enclosure& e) {
-  const std::string on = s.where + ".on";
-  const std::string length = unitNames(b.c.units).length;
-  if (s.elements.empty()) {
-    b.diag.error(s.line, on + ": names no membranes (got surfaces without membrane elements, "
-                              "expected the membranes that hold the liquid)");
-    return false;
-  }
-  if (e.mixed) {
-    b.diag.error(s.line, on + ": mixes axisymmetric meridians and 3-D membranes (expected one "
-                              "kind for one liquid)");
-    return false;
-  }
-  // A closed wall, or one open only in vertical planes, has int n_z dA = 0; the quadrature
-  // integrates it to round-off (measured below 1e-13 of the area).
-  if (std::abs(e.vertical_area) > 1e-6 * e.area) {
-    b.diag.error(s.line, on + ": does not enclose the liquid (got a vertical projected area of " +
-                             formatNumber(std::abs(e.vertical_area)) + " " + length +
-                             "^2 open to it, expected a closed surface or openings in vertical "
-                             "planes only, as a tube between symmetry planes)");
-    return false;
-  }
-  if (std::abs(e.volume) <= 1e-9 * std::pow(e.area, 1.5)) {
-    b.diag.error(s.line, on + ": encloses no volume in its reference shape (got " +
-                             formatNumber(e.volume) + " " + length +
-                             "^3, expected the liquid's volume: the mass is lumped from it)");
-    return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -112,15 +81,20 @@ void readEnclosedFluid(CaseBuilder& b, const YAML::Node& item, const std::string
   b.enclosed_fluids.push_back(std::move(s));
 }
 
-void addEnclosedFluids(CaseBuilder& b) {
-  for (const EnclosedFluidSpec& s : b.enclosed_fluids) {
+void resolveEnclosedFluids(CaseBuilder& b) {
+  for (EnclosedFluidSpec& s : b.enclosed_fluids) {
     const auto density = fluidDensity(b, s);
     const auto g = fluidGravity(b, s);
-    const hydro::Enclosure e = hydro::measureEnclosure(b.model, s.elements, b.model.initialState());
-    if (!checkEnclosure(b, s, e) || !density || !g) continue;
-    const int added = hydro::addEnclosedFluid(b.model, s.elements,
-                                              {*density, s.pressure, s.at_z.value_or(0.0), *g});
-    for (int i = 0; i < added; ++i) {
+    if (!density || !g) continue;
+    s.fluid = hydro::EnclosedFluid{*density, s.pressure, s.at_z.value_or(0.0), *g};
+    // The entries of its masses, one at each node of its wall (hydro::lumpedFluidMasses), for
+    // the readers that follow; buildEnclosedFluids puts the masses on the model.
+    std::set<int> wall;
+    for (int e : s.elements) {
+      const std::vector<int>& nodes = b.mesh.elementNodes(e);
+      wall.insert(nodes.begin(), nodes.end());
+    }
+    for (size_t i = 0; i < wall.size(); ++i) {
       b.element_types.push_back("point_mass");
       b.element_origin.push_back({s.line, s.where, ""});
     }

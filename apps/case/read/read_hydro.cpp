@@ -278,9 +278,8 @@ std::optional<double> bodyMass(CaseBuilder& b, Fields& f, double g) {
 
 // Whether a point mass sits at `node` already: an explicit point_mass element or a body's mass.
 bool hasPointMass(const CaseBuilder& b, int node) {
-  for (int e = 0; e < b.model.elementCount(); ++e)
-    if (b.element_types[e] == "point_mass" && b.model.element(e).nodes().front() == node)
-      return true;
+  for (int e = 0; e < b.mesh.elementCount(); ++e)
+    if (b.element_types[e] == "point_mass" && b.mesh.elementNodes(e).front() == node) return true;
   return std::any_of(b.body_masses.begin(), b.body_masses.end(),
                      [node](const PendingPointMass& m) { return m.node == node; });
 }

@@ -1,6 +1,7 @@
-// nodes:, lines: and elements: of a case file. Model nodes are the explicit nodes in ascending id,
-// then the nodes each line generates, then those of each surface; model elements are the explicit
-// elements in file order, then the cable elements of each line, then each surface's elements.
+// nodes:, lines: and elements: of a case file, into the case's MeshSpec (and so, once built, its
+// model). Nodes are the explicit nodes in ascending id, then the nodes each line generates, then
+// those of each surface; elements are the explicit elements in file order, then the cable
+// elements of each line, then each surface's elements.
 //
 // A line with `segment_of: NAME` is a segment of the multi-segment line NAME (chain - wire -
 // chain, each segment its own section and mesh): NAME's segments in file order, each after the
@@ -12,8 +13,6 @@
 
 #include "apps/case/case_builder.hpp"
 #include "apps/common/format_number.hpp"
-#include "libstruct/element/axisymmetric_membrane.hpp"
-#include "libstruct/element/spring_element.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -42,7 +41,7 @@ std::optional<LineEnd> readLineEnd(CaseBuilder& b, Fields& f, const char* point,
   }
   const auto attached = nodeRef(b, *n, f.path(node));
   if (!attached) return std::nullopt;
-  return LineEnd{b.model.reference().col(*attached), *attached};
+  return LineEnd{b.mesh.position(*attached), *attached};
 }
 
 // Joins a line to the multi-segment line `segment_of` names: a new name for its first segment,
@@ -210,7 +209,7 @@ std::optional<std::vector<int>> elementNodes(CaseBuilder& b, Fields& f, int coun
     b.diag.error(*n, f.path("nodes") + ": a node appears twice (expected distinct nodes)");
     return std::nullopt;
   }
-  const model::NodalField& X = b.model.reference();
+  const model::NodalField& X = b.mesh.reference;
   if (!((X.col(nodes.back()) - X.col(nodes.front())).norm() > 0.0)) {
     b.diag.error(*n,
                  f.path("nodes") + ": the end nodes coincide (expected an element of length > 0)");
@@ -219,60 +218,63 @@ std::optional<std::vector<int>> elementNodes(CaseBuilder& b, Fields& f, int coun
   return nodes;
 }
 
-std::unique_ptr<element::Element> readCable(CaseBuilder& b, Fields& f) {
+std::optional<ElementSpec> readCable(CaseBuilder& b, Fields& f) {
   const auto nodes = elementNodes(b, f, 2, 4);
   const YAML::Node* s = f.require("section");
   const SectionSpec* section = s ? b.section(*s, f.path("section")) : nullptr;
-  if (!nodes || !section) return nullptr;
-  return element::makeCableElement(*nodes, section->section, section->quadrature);
+  if (!nodes || !section) return std::nullopt;
+  return ElementSpec::cable(*nodes, section->section, section->quadrature);
 }
 
 // A membrane of 3, 6 or 10 nodes (triangle) or 4, 8 or 12 (quadrilateral), in the node order of
 // shape/quad_shape.hpp and shape/triangle_shape.hpp (Gmsh and VTK order).
-std::unique_ptr<element::Element> readMembrane(CaseBuilder& b, Fields& f) {
+std::optional<ElementSpec> readMembrane(CaseBuilder& b, Fields& f) {
   const auto nodes = elementNodes(b, f, 3, 12);
   const YAML::Node* s = f.require("section");
   const SectionSpec* section = s ? b.section(*s, f.path("section"), SectionUse::Membrane) : nullptr;
-  if (!nodes) return nullptr;
+  if (!nodes) return std::nullopt;
   const int count = static_cast<int>(nodes->size());
   const bool triangle = count == 3 || count == 6 || count == 10;
   if (!triangle && count != 4 && count != 8 && count != 12) {
     b.diag.error(*f.find("nodes"), f.path("nodes") + ": no membrane has " + std::to_string(count) +
                                        " nodes (expected 3, 6, 10 for a triangle or 4, 8, 12 for "
                                        "a quadrilateral)");
-    return nullptr;
+    return std::nullopt;
   }
-  if (!section) return nullptr;
-  return element::makeMembraneElement(triangle ? "triangle" : "quad", *nodes, section->membrane,
-                                      section->quadrature);
+  if (!section) return std::nullopt;
+  using Kind = ElementSpec::Kind;
+  return ElementSpec::membrane(triangle ? Kind::MembraneTriangle : Kind::MembraneQuad, *nodes,
+                               section->membrane, section->quadrature);
 }
 
 // A meridian element of 2 to 4 nodes in the x-z plane; its nodes' y dofs are fixed.
-std::unique_ptr<element::Element> readAxisymmetricMembrane(CaseBuilder& b, Fields& f) {
+std::optional<ElementSpec> readAxisymmetricMembrane(CaseBuilder& b, Fields& f) {
   const auto nodes = elementNodes(b, f, 2, 4);
   const YAML::Node* s = f.require("section");
   const SectionSpec* section = s ? b.section(*s, f.path("section"), SectionUse::Membrane) : nullptr;
-  if (!nodes || !section) return nullptr;
+  if (!nodes || !section) return std::nullopt;
   for (int node : *nodes) b.conditions.supports.push_back({node, 1, 0.0, nullptr, 0});
-  return element::makeAxisymmetricMembrane(*nodes, section->membrane, section->quadrature);
+  return ElementSpec::membrane(ElementSpec::Kind::AxisymmetricMembrane, *nodes, section->membrane,
+                               section->quadrature);
 }
 
 // A hoop ring of a cable section at one node of an axisymmetric model (radius = its x).
-std::unique_ptr<element::Element> readHoopCable(CaseBuilder& b, Fields& f) {
+std::optional<ElementSpec> readHoopCable(CaseBuilder& b, Fields& f) {
   const YAML::Node* n = f.require("node");
   const YAML::Node* s = f.require("section");
-  const auto node = n ? nodeRef(b, *n, f.path("node")) : std::nullopt;
+  const int node = n ? nodeRef(b, *n, f.path("node")).value_or(-1) : -1;
   const SectionSpec* section = s ? b.section(*s, f.path("section")) : nullptr;
-  if (!node || !section) return nullptr;
-  if (!(b.model.reference()(0, *node) > 0.0)) {
+  if (node < 0 || !section) return std::nullopt;
+  const double radius = b.mesh.position(node).x();
+  if (!(radius > 0.0)) {
     b.diag.error(*n, f.path("node") + ": a hoop needs a radius (got a node at x = " +
-                         formatNumber(b.model.reference()(0, *node)) + ", expected x > 0)");
-    return nullptr;
+                         formatNumber(radius) + ", expected x > 0)");
+    return std::nullopt;
   }
-  return std::make_unique<element::HoopCable>(*node, section->section);
+  return ElementSpec::hoopCable(node, section->section);
 }
 
-std::unique_ptr<element::Element> readSpring(CaseBuilder& b, Fields& f) {
+std::optional<ElementSpec> readSpring(CaseBuilder& b, Fields& f) {
   const auto nodes = elementNodes(b, f, 2, 2);
   const YAML::Node* k = f.require("stiffness");
   const auto stiffness =
@@ -292,19 +294,18 @@ std::unique_ptr<element::Element> readSpring(CaseBuilder& b, Fields& f) {
         b.in.choice(*c, f.path("compression"), compressionChoices()).value_or(compression);
   // A dashpot in parallel (N*s/m), its force c dl/dt along the spring.
   const double damping = b.in.quantityOr(f, "damping", kind::kDashpot, Limit::NonNegative, 0.0);
-  if (!nodes || !stiffness) return nullptr;
-  return std::make_unique<element::SpringElement>((*nodes)[0], (*nodes)[1], *stiffness, rest,
-                                                  compression, damping);
+  if (!nodes || !stiffness) return std::nullopt;
+  return ElementSpec::spring((*nodes)[0], (*nodes)[1], *stiffness, rest, compression, damping);
 }
 
-std::unique_ptr<element::Element> readPointMass(CaseBuilder& b, Fields& f) {
+std::optional<ElementSpec> readPointMass(CaseBuilder& b, Fields& f) {
   const YAML::Node* n = f.require("node");
   const YAML::Node* m = f.require("mass");
   const auto node = n ? nodeRef(b, *n, f.path("node")) : std::nullopt;
   const auto mass =
       m ? b.in.quantity(*m, f.path("mass"), kind::kMass, Limit::Positive) : std::nullopt;
-  if (!node || !mass) return nullptr;
-  return std::make_unique<element::PointMassElement>(*node, *mass);
+  if (!node || !mass) return std::nullopt;
+  return ElementSpec::pointMass(*node, *mass);
 }
 
 // One explicit element; its type ("" when it has errors) goes to element_types.
@@ -325,7 +326,7 @@ void readElement(CaseBuilder& b, const YAML::Node& item, const std::string& path
            : type == "point_mass" ? point_mass
            : type == "hoop_cable" ? hoop
                                   : any);  // the type itself is reported below
-  std::unique_ptr<element::Element> element;
+  std::optional<ElementSpec> element;
   if (type == "cable")
     element = readCable(b, f);
   else if (type == "membrane")
@@ -348,7 +349,7 @@ void readElement(CaseBuilder& b, const YAML::Node& item, const std::string& path
                       {"point_mass", 5}});
   b.element_types.push_back(element ? type : "");
   b.element_origin.push_back({lineOf(item), path, element ? peekText(item, "section") : ""});
-  if (element) b.model.addElement(std::move(element));
+  if (element) b.mesh.addElement(std::move(*element));
 }
 
 }  // namespace
@@ -361,7 +362,7 @@ std::string CaseBuilder::sectionName(const SectionSpec* spec) const {
 
 int CaseBuilder::addGeneratedNode(const Eigen::Vector3d& position, int line) {
   const int id = largestId() + 1;
-  const int node = model.addNode(position);
+  const int node = mesh.addNode(position);
   node_of_id[id] = node;
   c.node_ids.push_back(id);
   node_line.push_back(line);
@@ -376,7 +377,7 @@ void readNodes(CaseBuilder& b, const YAML::Node& n) {
     std::sort(order.begin(), order.end(), [&t](int i, int j) { return t.ids[i] < t.ids[j]; });
     model::NodalField X(3, order.size());
     for (size_t k = 0; k < order.size(); ++k) X.col(k) = t.points[order[k]];
-    const int first = b.model.addNodes(X);
+    const int first = b.mesh.addNodes(X);
     for (size_t k = 0; k < order.size(); ++k) {
       b.node_of_id.emplace_hint(b.node_of_id.end(), t.ids[order[k]], first + k);
       b.c.node_ids.push_back(t.ids[order[k]]);
@@ -405,7 +406,7 @@ void readNodes(CaseBuilder& b, const YAML::Node& n) {
   model::NodalField X(3, nodes.size());
   int k = 0;
   for (const auto& entry : nodes) X.col(k++) = entry.second.position;
-  const int first = b.model.addNodes(X);
+  const int first = b.mesh.addNodes(X);
   k = 0;
   for (const auto& [id, node] : nodes) {
     b.node_of_id[id] = first + k++;
@@ -425,7 +426,7 @@ void readElements(CaseBuilder& b, const YAML::Node& n) {
   for (PendingCable& p : b.line_cables) {
     const SectionSpec& s = *b.sections.at(p.section);
     const int e =
-        b.model.addElement(element::makeCableElement(std::move(p.nodes), s.section, s.quadrature));
+        b.mesh.addElement(ElementSpec::cable(std::move(p.nodes), s.section, s.quadrature));
     if (!p.name.empty()) b.line_elements[p.name].push_back(e);
     if (!p.segment_of.empty()) b.line_elements[p.segment_of].push_back(e);
     b.element_types.push_back("cable");
@@ -435,7 +436,7 @@ void readElements(CaseBuilder& b, const YAML::Node& n) {
   for (PendingSurface& surface : b.surface_elements) {
     std::vector<int>& set = b.c.element_sets[surface.name];
     for (PendingElement& e : surface.elements) {
-      set.push_back(b.model.addElement(std::move(e.element)));
+      set.push_back(b.mesh.addElement(std::move(e.element)));
       b.element_types.push_back(e.type);
       b.element_origin.push_back({surface.line, "surface '" + surface.name + "'", e.section});
     }

@@ -385,7 +385,7 @@ bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path
     s.element_weights.push_back(w);
   }
   const std::vector<int>& nodes = b.c.lines.at(*name);
-  const model::NodalField& X = b.model.reference();
+  const model::NodalField& X = b.mesh.reference;
   const ConditionsSpec& held = b.conditions;
   const auto height = [&](int node) {  // where its supports put it, at load factor 1
     return X(2, node) + held.prescribed(node, 2);
@@ -400,7 +400,7 @@ bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path
   // The weight of the element at the anchor, for the anchor's share of the laid weight.
   s.weight_per_length = s.element_weights.front();
   for (size_t i = 0; i < s.elements.size(); ++i) {
-    const std::vector<int>& ends = b.model.element(s.elements[i]).nodes();
+    const std::vector<int>& ends = b.mesh.elementNodes(s.elements[i]);
     if (ends.front() == lower || ends.back() == lower) s.weight_per_length = s.element_weights[i];
   }
   return true;
