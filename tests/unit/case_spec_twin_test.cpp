@@ -1,0 +1,115 @@
+// A case stated in code (CaseSpec, buildCase) and the same case read from its file build the same
+// model and give the same results, to the bit: Example 1's cable of 8 linear elements
+// (cases/seed/ex1-suspended-cable-8xL2.yaml), relaxed under gravity and a pull at its roller.
+// And what the specifications get wrong is refused with its reason.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "apps/case/build/build_case.hpp"
+#include "apps/case/case_reader.hpp"
+#include "apps/run/simulation.hpp"
+#include "libstruct/material/cable_material.hpp"
+
+namespace flexmoor::test {
+namespace {
+
+// The file's case, in code: units US (ft, slug, s, lbf).
+app::CaseSpec example1InCode() {
+  app::CaseSpec spec;
+  spec.name = "ex1-in-code";
+  spec.units = app::UnitSystem::US;
+  element::CableSection section;
+  section.area = 0.1;          // ft^2
+  section.density = 0.031056;  // slug/ft^3
+  section.material =
+      std::make_shared<material::LinearElasticCable>(1.0e6, material::Compression::Carry);
+  app::CaseLine cable;
+  cable.name = "cable";
+  for (int k = 0; k <= 8; ++k)
+    cable.nodes.push_back(spec.mesh.addNode(Eigen::Vector3d(25.0 * k, 0.0, 0.0)));
+  for (int e = 0; e < 8; ++e)
+    cable.elements.push_back(spec.mesh.addElement(
+        app::ElementSpec::cable({cable.nodes[e], cable.nodes[e + 1]}, section, 0)));
+  for (int node : cable.nodes)
+    spec.conditions.supports.push_back({node, 1, 0.0, nullptr, 0});               // the x-z plane
+  spec.conditions.supports.push_back({cable.nodes.front(), 0, 0.0, nullptr, 0});  // pinned
+  spec.conditions.supports.push_back({cable.nodes.front(), 2, 0.0, nullptr, 0});
+  spec.conditions.supports.push_back(
+      {cable.nodes.back(), 2, 0.0, nullptr, 0});  // a horizontal roller
+  spec.conditions.gravity = Eigen::Vector3d(0.0, 0.0, -32.2);
+  spec.conditions.nodal_loads.push_back(
+      {cable.nodes.back(), Eigen::Vector3d(5.8, 0.0, 0.0), nullptr});
+  app::StepSpec relax;
+  relax.kind = app::StepSpec::Kind::Relax;
+  relax.name = "relax";
+  relax.relax.tolerance = 0.001;
+  relax.relax.initial_damping_factor = 0.01;
+  relax.relax.decrement = 1.0;
+  relax.relax.damping = 10000.0;
+  spec.steps.push_back(relax);
+  spec.lines.push_back(cable);
+  return spec;
+}
+
+app::SimulationResult run(const app::Case& c) {
+  std::ostringstream log, diag;
+  app::Simulation simulation(c, log, diag);
+  return simulation.run();
+}
+
+TEST(CaseSpecTwin, Example1InCodeIsItsCaseFileToTheBit) {
+  const app::Case file =
+      app::readCase(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/seed/ex1-suspended-cable-8xL2.yaml");
+  const app::Case code = app::buildCase(example1InCode());
+  const model::Model &a = *file.model, &b = *code.model;
+  ASSERT_EQ(a.nodeCount(), b.nodeCount());
+  ASSERT_EQ(a.elementCount(), b.elementCount());
+  ASSERT_EQ(a.equationCount(), b.equationCount());
+  EXPECT_EQ(a.reference(), b.reference());
+  for (int e = 0; e < a.elementCount(); ++e) EXPECT_EQ(a.element(e).nodes(), b.element(e).nodes());
+  for (int n = 0; n < a.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(a.equation(n, k), b.equation(n, k)) << n << " " << k;
+      EXPECT_EQ(a.prescribed(n, k), b.prescribed(n, k)) << n << " " << k;
+    }
+  EXPECT_EQ(a.gravity(), b.gravity());
+  ASSERT_EQ(a.nodalLoads().size(), b.nodalLoads().size());
+  EXPECT_EQ(a.nodalLoads()[0].node, b.nodalLoads()[0].node);
+  EXPECT_EQ(a.nodalLoads()[0].force, b.nodalLoads()[0].force);
+  EXPECT_EQ(file.lines, code.lines);
+
+  const app::SimulationResult from_file = run(file), from_code = run(code);
+  ASSERT_EQ(from_file.exit_code, app::kSuccess);
+  ASSERT_EQ(from_code.exit_code, app::kSuccess);
+  const model::State &s = from_file.states.back(), &t = from_code.states.back();
+  EXPECT_EQ(s.displacement, t.displacement);             // to the bit
+  EXPECT_GT(s.displacement.cwiseAbs().maxCoeff(), 1.0);  // it did sag (ft)
+}
+
+TEST(CaseSpecTwin, WhatTheSpecificationsGetWrongIsRefusedWithItsReason) {
+  const auto refused = [](const app::CaseSpec& spec, const std::string& part) {
+    try {
+      app::buildCase(spec);
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+      return;
+    }
+    ADD_FAILURE() << "not refused: " << part;
+  };
+  app::CaseSpec spec = example1InCode();
+  spec.conditions.nodal_loads.push_back({42, Eigen::Vector3d::UnitX(), nullptr});
+  refused(spec, "a load: node 42 is not in the mesh (9 nodes, 0-based)");
+  spec = example1InCode();
+  spec.steps.clear();
+  refused(spec, "no steps");
+  spec = example1InCode();
+  for (int n = 0; n < spec.mesh.nodeCount(); ++n)
+    for (int k = 0; k < 3; ++k) spec.conditions.supports.push_back({n, k, 0.0, nullptr, 0});
+  refused(spec, "every dof is fixed");
+}
+
+}  // namespace
+}  // namespace flexmoor::test
