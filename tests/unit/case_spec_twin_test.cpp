@@ -1,6 +1,7 @@
-// A case stated in code (CaseSpec, buildCase) and the same case read from its file build the same
-// model and give the same results, to the bit: Example 1's cable of 8 linear elements
-// (cases/seed/ex1-suspended-cable-8xL2.yaml), relaxed under gravity and a pull at its roller.
+// A case stated in code (CaseSpec, buildCase) and the same case read from its YAML build the same
+// model and give the same results, to the bit: Example 1's cable of 8 linear elements, relaxed
+// under gravity and a pull at its roller (cases/seed/ex1-suspended-cable-8xL2.yaml with its
+// values in the case's units, without unit names: a value converted from "psf" moves by an ulp).
 // And what the specifications get wrong is refused with its reason.
 #include <gtest/gtest.h>
 
@@ -12,11 +13,32 @@
 #include "apps/case/case_reader.hpp"
 #include "apps/run/simulation.hpp"
 #include "libstruct/material/cable_material.hpp"
+#include "tests/support/case_files.hpp"
 
 namespace flexmoor::test {
 namespace {
 
-// The file's case, in code: units US (ft, slug, s, lbf).
+const char* kExample1 = R"(name: ex1-twin
+units: US
+materials:
+  cable: {type: linear_elastic, E: 1000000, compression: carry}
+sections:
+  cable: {material: cable, area: 0.1, density: 0.031056}
+lines:
+  - {name: cable, from: [0, 0, 0], to: [200, 0, 0], elements: 8, order: 2, section: cable}
+supports:
+  - {nodes: all, fix: [y]}
+  - {node: cable.start, fix: [x, z]}
+  - {node: cable.end, fix: [z]}
+loads:
+  gravity: [0, 0, -32.2]
+  nodal:
+    - {node: cable.end, force: [5.8, 0, 0]}
+steps:
+  - relax: {tolerance: 0.001, initial_damping_factor: 0.01, decrement: 1.0, damping: 10000}
+)";
+
+// The same case in code: units US (ft, slug, s, lbf).
 app::CaseSpec example1InCode() {
   app::CaseSpec spec;
   spec.name = "ex1-in-code";
@@ -61,8 +83,7 @@ app::SimulationResult run(const app::Case& c) {
 }
 
 TEST(CaseSpecTwin, Example1InCodeIsItsCaseFileToTheBit) {
-  const app::Case file =
-      app::readCase(std::string(FLEXMOOR_SOURCE_DIR) + "/cases/seed/ex1-suspended-cable-8xL2.yaml");
+  const app::Case file = app::readCase(writeCase("ex1-twin.yaml", kExample1));
   const app::Case code = app::buildCase(example1InCode());
   const model::Model &a = *file.model, &b = *code.model;
   ASSERT_EQ(a.nodeCount(), b.nodeCount());

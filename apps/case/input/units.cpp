@@ -3,7 +3,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -253,13 +252,7 @@ double parseValue(const std::string& text, const QuantityKind& expected, UnitSys
   if (unit.dimension != expected.dimension)
     throw UnitError("wrong unit: expected " + std::string(expected.name) + ", got '" + unit_text +
                     "' (" + describeDimension(unit.dimension) + ")");
-  const double scale = systemScale(unit.dimension, system);
-  // A unit that is the system's own (psf, ft or lbf in a US case) converts by a ratio that is 1
-  // but for the round-off of the constants: the value is then taken as written, as a program
-  // stating the same case in code states it, not moved by an ulp.
-  if (std::abs(unit.si_factor - scale) <= 4.0 * std::numeric_limits<double>::epsilon() * scale)
-    return number;
-  return number * unit.si_factor / scale;
+  return number * unit.si_factor / systemScale(unit.dimension, system);
 }
 
 std::string describeDimension(Dimension d) {
