@@ -144,9 +144,9 @@ struct CaseBuilder {
   std::vector<ElementOrigin> element_origin;  // of each element, like element_types
   MeshSpec mesh;  // nodes:, lines:, surfaces:, elements: and the bodies' masses (read_mesh.cpp)
   ConditionsSpec conditions;  // supports:, loads: and the planar models' fixed y (read_conditions)
-  // The support that fixed each dof first (3 * node + component -> line), to refuse a second
-  // one that prescribes another value.
-  std::unordered_map<long long, int> support_line;
+  // The `supports:` entry that fixed each dof first (3 * node + component -> its index in
+  // conditions.supports), to refuse a second one that prescribes another value.
+  std::unordered_map<long long, size_t> first_support;
   bool gravity_given = false;                    // `loads: gravity` (the water takes its magnitude)
   HydroSpec hydro;                               // the ocean sections (read_hydro.cpp)
   std::vector<PendingPointMass> body_masses;     // of the bodies that give one (read_hydro.cpp)

@@ -347,10 +347,10 @@ void Assembler::restrictToFree(const Eigen::Ref<const Eigen::VectorXd>& full,
       if (const int eq = model_.equation(n, k); eq >= 0) free(eq) = full(3 * n + k);
 }
 
-void Assembler::addFree(const Eigen::VectorXd& free_values, NodalField& field) const {
+void Assembler::addFree(const Eigen::VectorXd& free_values, NodalField& field, double scale) const {
   for (int n = 0; n < model_.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k)
-      if (const int eq = model_.equation(n, k); eq >= 0) field(k, n) += free_values(eq);
+      if (const int eq = model_.equation(n, k); eq >= 0) field(k, n) += scale * free_values(eq);
 }
 
 void Assembler::applyPrescribed(State& state) const {

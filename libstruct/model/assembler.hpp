@@ -86,7 +86,7 @@ class Assembler {
   // scatter into a nodal field.
   Eigen::VectorXd restrictToFree(const Eigen::Ref<const Eigen::VectorXd>& full) const;
   void restrictToFree(const Eigen::Ref<const Eigen::VectorXd>& full, Eigen::VectorXd& free) const;
-  void addFree(const Eigen::VectorXd& free_values, NodalField& field) const;
+  void addFree(const Eigen::VectorXd& free_values, NodalField& field, double scale = 1.0) const;
   // Sets the constrained dofs to their prescribed value times the load factor, or to their
   // history at the state's time (with its velocity and acceleration).
   void applyPrescribed(State& state) const;

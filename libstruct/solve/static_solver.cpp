@@ -122,10 +122,7 @@ class IncrementSolve final : public NewtonProblem {
     return true;
   }
   void add(const Eigen::VectorXd& du, double scale) override {
-    if (scale == 1.0)
-      a_.addFree(du, state_->displacement);
-    else
-      a_.addFree(scale * du, state_->displacement);
+    a_.addFree(du, state_->displacement, scale);
   }
   void measure(const Eigen::VectorXd& du, IterateNorms& norms) const override {
     incrementNorm(a_, du, state_->displacement, norms);

@@ -260,12 +260,7 @@ bool TimeIntegrator::increment(int it, const VectorXd& R, VectorXd& du) {
   return true;
 }
 
-void TimeIntegrator::add(const VectorXd& du, double scale) {
-  if (scale == 1.0)
-    scratch_.u += du;
-  else
-    scratch_.u += scale * du;
-}
+void TimeIntegrator::add(const VectorXd& du, double scale) { scratch_.u += scale * du; }
 
 // The increment against the element size, its floor from the iterate it was solved at.
 void TimeIntegrator::measure(const VectorXd& du, IterateNorms& norms) const {

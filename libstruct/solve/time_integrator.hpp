@@ -154,7 +154,7 @@ class TimeIntegrator : private NewtonProblem {
   struct Scratch {
     BalanceScratch balance;
     Residual residual;
-    Eigen::VectorXd viscous, inertia, free, acceleration, velocity, balance_here, increment;
+    Eigen::VectorXd viscous, inertia, free, acceleration, velocity, balance_here;
     Eigen::VectorXd u_n, v_n, acc_n, u, previous_balance;  // the step's start and iterate
     model::State next;                                     // the state the step goes to
     NewtonWork newton;

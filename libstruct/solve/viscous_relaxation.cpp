@@ -55,6 +55,7 @@ class RelaxationStep final : public NewtonProblem {
   void evaluate(int, Eigen::VectorXd& R, IterateNorms& norms) override {
     Residual r = staticOutOfBalance(a_, *state_, &K_);
     if (K_.rows() > 0) stiffness_ = K_.diagonal().cwiseAbs().mean();
+    static_residual_ = r.relative();  // P - F, before the pseudo-time damping
     r.free -= C_ * a_.restrictToFree(asVector(state_->displacement) - asVector(*previous_));
     K_.diagonal().array() += C_;  // Eq. C.10, D = C I (Eq. C.11)
     norms.residual = r.relative();
@@ -68,7 +69,7 @@ class RelaxationStep final : public NewtonProblem {
     return du.allFinite();
   }
   void add(const Eigen::VectorXd& du, double scale) override {
-    a_.addFree(scale * du, state_->displacement);
+    a_.addFree(du, state_->displacement, scale);
   }
   void measure(const Eigen::VectorXd& du, IterateNorms& norms) const override {
     incrementNorm(a_, du, state_->displacement, norms);
@@ -77,6 +78,8 @@ class RelaxationStep final : public NewtonProblem {
   const NewtonTrace& trace() const { return trace_; }
   double stiffness() const { return stiffness_; }  // mean |K_ii| of the last tangent
   double floor() const { return floor_; }          // Residual::floor of the last tangent
+  // |P - F| / S at the last iterate, the step's end once it converged: the static residual.
+  double staticResidual() const { return static_residual_; }
 
  private:
   const model::Assembler& a_;
@@ -90,6 +93,7 @@ class RelaxationStep final : public NewtonProblem {
   double C_ = 0.0;
   double stiffness_ = 0.0;
   double floor_ = 0.0;
+  double static_residual_ = 0.0;
 };
 
 // Why a pseudo-time step fails even with a raised damping.
@@ -170,7 +174,7 @@ RelaxationReport relax(const model::Assembler& assembler, model::State& state,
         assembler.restrictToFree(asVector(state.displacement) - asVector(previous));
     move = largestMove(assembler.model(), change);
     const double ratio = changeRatio(assembler, change, state.displacement);  // Eq. C.15
-    const double residual = outOfBalance(assembler, state, nullptr).relative();
+    const double residual = pseudo_step.staticResidual();
     report.steps = step;
     report.change_ratio = ratio;
     report.residual_norm = residual;

@@ -71,12 +71,13 @@ void readSupport(CaseBuilder& b, const YAML::Node& item, const std::string& path
   for (int node : *nodes)
     for (size_t i = 0; i < fix->size(); ++i) {
       const int k = (*fix)[i];
-      const auto [first, added] = b.support_line.emplace(3LL * node + k, lineOf(item));
+      const auto [first, added] =
+          b.first_support.emplace(3LL * node + k, b.conditions.supports.size());
       if (added) {
         b.conditions.supports.push_back({node, k, (*values)[i], history, lineOf(item)});
         continue;
       }
-      const SupportSpec& earlier = *b.conditions.support(node, k);
+      const SupportSpec& earlier = b.conditions.supports[first->second];
       const bool same = earlier.displacement == (*values)[i] && earlier.history == history;
       if (!same && !reported) {
         b.diag.error(item, path + ": node " + std::to_string(b.c.node_ids[node]) + " " + kAxis[k] +
@@ -84,7 +85,7 @@ void readSupport(CaseBuilder& b, const YAML::Node& item, const std::string& path
                                formatNumber((*values)[i]) + (history ? " with a history" : "") +
                                " here and " + formatNumber(earlier.displacement) +
                                (earlier.history ? " with a history" : "") + " on line " +
-                               std::to_string(first->second) +
+                               std::to_string(earlier.line) +
                                ", expected one prescribed displacement a dof)");
         reported = true;
       }
@@ -211,26 +212,18 @@ void readSupports(CaseBuilder& b, const YAML::Node& n) {
 void readLoads(CaseBuilder& b, const YAML::Node& n) {
   Fields f(b.diag, n, "loads", {"gravity", "nodal", "pressure", "wave_pressure", "enclosed_fluid"});
   if (const YAML::Node* g = f.find("gravity")) readGravity(b, *g, f.path("gravity"));
-  if (const YAML::Node* nodal = f.find("nodal")) {
-    const std::vector<YAML::Node> items = listItems(b.diag, *nodal, f.path("nodal"));
-    for (size_t i = 0; i < items.size(); ++i)
-      readNodalLoad(b, items[i], itemPath(f.path("nodal"), i));
-  }
-  if (const YAML::Node* pressure = f.find("pressure")) {
-    const std::vector<YAML::Node> items = listItems(b.diag, *pressure, f.path("pressure"));
-    for (size_t i = 0; i < items.size(); ++i)
-      readPressure(b, items[i], itemPath(f.path("pressure"), i));
-  }
-  if (const YAML::Node* wave = f.find("wave_pressure")) {
-    const std::vector<YAML::Node> items = listItems(b.diag, *wave, f.path("wave_pressure"));
-    for (size_t i = 0; i < items.size(); ++i)
-      readWavePressure(b, items[i], itemPath(f.path("wave_pressure"), i));
-  }
-  if (const YAML::Node* fluid = f.find("enclosed_fluid")) {
-    const std::vector<YAML::Node> items = listItems(b.diag, *fluid, f.path("enclosed_fluid"));
-    for (size_t i = 0; i < items.size(); ++i)
-      readEnclosedFluid(b, items[i], itemPath(f.path("enclosed_fluid"), i));
-  }
+  // Each item of the list under `key`, read by `read` with its path.
+  using ItemReader = void (*)(CaseBuilder&, const YAML::Node&, const std::string&);
+  const auto each = [&](const char* key, ItemReader read) {
+    const YAML::Node* list = f.find(key);
+    if (!list) return;
+    const std::vector<YAML::Node> items = listItems(b.diag, *list, f.path(key));
+    for (size_t i = 0; i < items.size(); ++i) read(b, items[i], itemPath(f.path(key), i));
+  };
+  each("nodal", readNodalLoad);
+  each("pressure", readPressure);
+  each("wave_pressure", readWavePressure);
+  each("enclosed_fluid", readEnclosedFluid);
 }
 
 }  // namespace flexmoor::app
