@@ -18,12 +18,14 @@
 #include <unordered_map>
 #include <vector>
 
-#include "apps/case/hydro_spec.hpp"
+#include "apps/case/check/model_checks.hpp"
 #include "apps/case/input/node_table.hpp"
 #include "apps/case/input/yaml_input.hpp"
 #include "apps/problem/case.hpp"
+#include "apps/problem/catenary_start_spec.hpp"
 #include "apps/problem/conditions_spec.hpp"
 #include "apps/problem/mesh_spec.hpp"
+#include "apps/problem/ocean_spec.hpp"
 #include "libhydro/loads/enclosed_fluid.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/membrane_element.hpp"
@@ -41,15 +43,6 @@ struct SectionSpec {
 
 // What a section is asked for: cable-like elements (cables, hoop cables) or membranes.
 enum class SectionUse { Cable, Membrane };
-
-// Where an element comes from, for the messages of the checks of the built model
-// (model_checks.cpp): the line of the file that defines it, that item's path ("elements[3]",
-// "lines[1]", "surfaces.roof") and its section's name ("" for none).
-struct ElementOrigin {
-  int line = 0;
-  std::string where;
-  std::string section;
-};
 
 // An element one surface generates, with its element_types entry ("membrane",
 // "axisymmetric_membrane", "cable", "hoop_cable") and its section's name.
@@ -86,22 +79,17 @@ struct PendingPointMass {
   std::string where;  // "bodies[2]"
 };
 
-// A line's `initial_shape: catenary` (read_initial_shape.cpp): its nodes start on the elastic
-// catenary between where its supports put its ends (build_initial_shape.cpp).
-struct InitialShapeSpec {
-  std::vector<int> nodes;  // the line's, start to end
-  const SectionSpec* section = nullptr;
-  double friction = 0.0;    // C_B on the laid part (the static FE has no friction: default 0)
-  double max_strain = 0.1;  // hydro::CatenaryLineInputs::max_strain
-  int line = 0;
-  std::string where;       // "lines[2].initial_shape"
-  std::string segment_of;  // the multi-segment line whose segment it is (read_mesh.cpp), or ""
+// A line's `initial_shape: catenary` as read (read_initial_shape.cpp): one part of the line's
+// catenary start, which the line's segments join once all are read (catenaryStarts).
+struct PendingInitialShape {
+  CatenaryStartSpec start;  // of this line alone
+  std::string segment_of;   // the multi-segment line whose segment it is (read_mesh.cpp), or ""
 };
 
 // One item of `loads: enclosed_fluid:` as read (read_enclosed_fluid.cpp): the liquid in the
 // membranes of `on:`; its density and gravity are resolved once the water is read, and it is put
-// on the model once that is built (build_enclosed_fluid.cpp).
-struct EnclosedFluidSpec {
+// on the model once that is built (an EnclosedFluidSpec, build_enclosed_fluid.hpp).
+struct PendingEnclosedFluid {
   std::vector<int> elements;
   std::optional<double> density, specific_gravity;  // exactly one of them
   double pressure = 0.0;
@@ -123,7 +111,6 @@ struct CaseBuilder {
   std::optional<NodeTable> node_table;  // nodes: when read by the fast path (node_table.hpp)
   std::map<int, int> node_of_id;        // file id -> model node
   std::set<int> broken_node_ids;        // explicit nodes given with errors
-  std::vector<int> node_line;           // model node -> line that defines it
   std::map<std::string, std::shared_ptr<const material::CableMaterial>> materials;  // null: broken
   std::map<std::string, std::optional<SectionSpec>> sections;  // nullopt: broken
   std::set<std::string> broken_node_names;  // lines and node sets defined with errors
@@ -141,17 +128,17 @@ struct CaseBuilder {
   // Type of each element in file order ("cable", "spring", "point_mass", "membrane",
   // "axisymmetric_membrane", "hoop_cable"; "" when broken).
   std::vector<std::string> element_types;
-  std::vector<ElementOrigin> element_origin;  // of each element, like element_types
+  ModelOrigins origins;  // of each node and element, for the checks' messages
   MeshSpec mesh;  // nodes:, lines:, surfaces:, elements: and the bodies' masses (read_mesh.cpp)
   ConditionsSpec conditions;  // supports:, loads: and the planar models' fixed y (read_conditions)
   // The `supports:` entry that fixed each dof first (3 * node + component -> its index in
   // conditions.supports), to refuse a second one that prescribes another value.
   std::unordered_map<long long, size_t> first_support;
-  bool gravity_given = false;                    // `loads: gravity` (the water takes its magnitude)
-  HydroSpec hydro;                               // the ocean sections (read_hydro.cpp)
-  std::vector<PendingPointMass> body_masses;     // of the bodies that give one (read_hydro.cpp)
-  std::vector<InitialShapeSpec> initial_shapes;  // of the lines that give one
-  std::vector<EnclosedFluidSpec> enclosed_fluids;  // read with loads: (read_enclosed_fluid.cpp)
+  bool gravity_given = false;                 // `loads: gravity` (the water takes its magnitude)
+  OceanSpec ocean;                            // the ocean sections (read_hydro.cpp)
+  std::vector<PendingPointMass> body_masses;  // of the bodies that give one (read_hydro.cpp)
+  std::vector<PendingInitialShape> initial_shapes;    // of the lines that give one
+  std::vector<PendingEnclosedFluid> enclosed_fluids;  // read with loads: (read_enclosed_fluid.cpp)
 
   std::set<std::pair<int, int>> released;  // (node, component) freed by a step's release:
   // Adds a node with the next free id (after the largest so far).
@@ -187,7 +174,7 @@ void readNodeSets(CaseBuilder& b, const YAML::Node& n);
 void readHistories(CaseBuilder& b, const YAML::Node& n);  // read_histories.cpp
 void readSupports(CaseBuilder& b, const YAML::Node& n);
 void readLoads(CaseBuilder& b, const YAML::Node& n);
-// water:, waves:, current:, seabed: and bodies: of the top-level map, into b.hydro; a body's mass
+// water:, waves:, current:, seabed: and bodies: of the top-level map, into b.ocean; a body's mass
 // into b.body_masses. Also refuses a section's hydro: without water.
 void readOcean(CaseBuilder& b, const Fields& top);
 // One item of `loads: enclosed_fluid:`, and the liquids of them all resolved after readOcean:
@@ -195,10 +182,9 @@ void readOcean(CaseBuilder& b, const Fields& top);
 // (read_enclosed_fluid.cpp).
 void readEnclosedFluid(CaseBuilder& b, const YAML::Node& item, const std::string& path);
 void resolveEnclosedFluids(CaseBuilder& b);
-// The liquids put on the built model (their pressure and lumped mass,
-// libhydro/loads/enclosed_fluid.hpp) where their walls enclose them; the others are errors at
-// their items (build_enclosed_fluid.cpp).
-void buildEnclosedFluids(CaseBuilder& b);
+// The liquids put on the built model (their pressure and lumped mass, build_enclosed_fluid.hpp)
+// where their walls enclose them; the others are errors at their items (read_enclosed_fluid.cpp).
+void putEnclosedFluids(CaseBuilder& b);
 // The membranes of the surfaces that `on:` names (one surface or a list); nullopt when a name is
 // unknown (reported) or broken (read_conditions.cpp).
 std::optional<std::vector<int>> surfaceMembranes(CaseBuilder& b, const YAML::Node& on,
@@ -215,28 +201,17 @@ std::optional<SummarySpec> readSeriesQuantity(CaseBuilder& b, const YAML::Node& 
 void readOutput(CaseBuilder& b, const YAML::Node& n);  // read_output.cpp
 // After readOutput: a series must be of a field the records hold.
 void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp
-// The checks of the built model and its steps that no section's reader can make alone
-// (model_checks.cpp): degenerate elements, free nodes and rigid-body mechanisms, coincident
-// nodes, steps that need a mass or more dofs than there are. Errors go to the Diagnostics;
-// warnings (the model runs, but perhaps not as meant) too, as warnings.
-void checkModel(CaseBuilder& b);
 // A line's `initial_shape:` (read_initial_shape.cpp), kept in b.initial_shapes.
 void readInitialShape(CaseBuilder& b, const YAML::Node& n, const std::string& path,
                       const std::vector<int>& nodes, const SectionSpec* section,
                       const std::string& segment_of);
+// The catenary starts of the lines with an initial_shape:, the segments of a multi-segment line
+// joined into one start, the line's; a line whose segments do not all give it is an error
+// (read_initial_shape.cpp).
+std::vector<CatenaryStartSpec> catenaryStarts(CaseBuilder& b);
 // The weight per unstretched length of a line of this section in the case's gravity, less its
-// buoyancy rho_w g pi d^2 / 4 where the section has hydro: in water (build_initial_shape.cpp).
+// buoyancy where the section has hydro: in water (build_initial_shape.hpp).
 double submergedWeightPerLength(const CaseBuilder& b, const SectionSpec& section);
-// The start of the lines with an initial_shape: (build_initial_shape.cpp): each one's nodes on
-// the elastic catenary with seabed contact between its ends as its supports place them, as the
-// model's start displacements at load factor 1. Lines that cannot be started are errors at their
-// key. For a valid case only (after checkModel).
-void buildInitialShapes(CaseBuilder& b);
-// The sea of b.hydro and its loads on the model (build_hydro.cpp): Morison loads on the lines of
-// sections with hydro:, the bodies' loads, seabed contact; the sea kept in the Case. For a valid
-// case only (after checkModel).
-void buildOcean(CaseBuilder& b);
-
 // A section's `hydro:` (read_hydro.cpp).
 std::optional<LineHydroSpec> readLineHydro(CaseBuilder& b, const YAML::Node& n,
                                            const std::string& path);
@@ -245,9 +220,6 @@ std::optional<LineHydroSpec> readLineHydro(CaseBuilder& b, const YAML::Node& n,
 // an unknown name, returns nullptr for it and for a broken one.
 std::shared_ptr<const model::TimeFunction> historyRef(CaseBuilder& b, const YAML::Node& n,
                                                       const std::string& path);
-
-// Positions closer than this (a millionth of the model's size) are one point (node_refs.cpp).
-double positionTolerance(const CaseBuilder& b);
 
 // Node references (node_refs.cpp). One node: an id, LINE.start, LINE.end or LINE.middle.
 std::optional<int> nodeRef(CaseBuilder& b, const YAML::Node& n, const std::string& path);

@@ -7,7 +7,9 @@
 #include <stdexcept>
 
 #include "apps/case/build/build_conditions.hpp"
+#include "apps/case/build/build_initial_shape.hpp"
 #include "apps/case/build/build_mesh.hpp"
+#include "apps/case/build/build_ocean.hpp"
 #include "apps/case/case_builder.hpp"
 #include "apps/case/input/nearest_names.hpp"
 #include "apps/case/input/yaml_load.hpp"
@@ -58,7 +60,21 @@ void addBodyMasses(CaseBuilder& b) {
   for (const PendingPointMass& m : b.body_masses) {
     b.mesh.addElement(ElementSpec::pointMass(m.node, m.mass));
     b.element_types.push_back("point_mass");
-    b.element_origin.push_back({m.line, m.where, ""});
+    b.origins.elements.push_back({m.line, m.where, ""});
+  }
+}
+
+// Morison loads on the cable-like elements of each section with hydro: (the checks refuse them on
+// a hoop ring).
+void addMorison(CaseBuilder& b) {
+  for (const auto& [name, section] : b.sections) {
+    if (!section || !section->hydro) continue;
+    MorisonSpec morison{{}, *section->hydro};
+    for (int e = 0; e < b.mesh.elementCount(); ++e)
+      if ((b.element_types[e] == "cable" || b.element_types[e] == "hoop_cable") &&
+          b.origins.elements[e].section == name)
+        morison.elements.push_back(e);
+    if (!morison.elements.empty()) b.ocean.morison.push_back(std::move(morison));
   }
 }
 
@@ -125,6 +141,7 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   readLoads(b, section("loads"));
   readOcean(b, top);
   addBodyMasses(b);
+  if (b.ocean.has_water) addMorison(b);
   resolveEnclosedFluids(b);
   if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
   readSummary(b, section("summary"));
@@ -134,18 +151,20 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
 
   buildMesh(b.mesh, *c.model);
   buildConditions(b.conditions, *c.model);
-  buildEnclosedFluids(b);
+  putEnclosedFluids(b);
   c.model->numberEquations();
   if (diag.empty()) {
     if (c.model->elementCount() == 0)
       diag.error(0, "the case has no elements (expected lines: or elements:)");
     else if (c.model->equationCount() == 0)
       diag.error(0, "every dof is fixed (expected something to solve for)");
-    checkModel(b);
+    checkModel({c, b.mesh, b.ocean, b.origins, b.surfaces, b.histories, diag});
   }
-  if (diag.empty()) buildInitialShapes(b);
+  if (diag.empty())
+    for (const SpecError& e : startOnCatenaries(catenaryStarts(b), b.ocean, c))
+      diag.error(e.line, e.message);
   diag.throwIfAny();
-  buildOcean(b);
+  buildOcean(b.ocean, c);
   c.warnings = diag.warnings();
   c.notes = diag.notes();
   return c;

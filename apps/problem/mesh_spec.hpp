@@ -5,6 +5,7 @@
 // elements, in this order. Nodes are 0-based model nodes, elements 0-based model elements; values
 // are in the case's units.
 #include <Eigen/Core>
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -85,6 +86,13 @@ struct ElementSpec {
   }
 };
 
+// Positions of these nodes closer than this (a millionth of the model's size) are one point.
+inline double positionTolerance(const model::NodalField& reference) {
+  if (reference.cols() == 0) return 0.0;
+  const double size = (reference.rowwise().maxCoeff() - reference.rowwise().minCoeff()).norm();
+  return 1e-6 * std::max(size, reference.cwiseAbs().maxCoeff());
+}
+
 struct MeshSpec {
   model::NodalField reference = model::NodalField(3, 0);  // each node's reference position
   std::vector<ElementSpec> elements;
@@ -112,6 +120,7 @@ struct MeshSpec {
   Eigen::Vector3d position(int node) const { return reference.col(node); }
   int elementCount() const { return static_cast<int>(elements.size()); }
   const std::vector<int>& elementNodes(int element) const { return elements[element].nodes; }
+  double positionTolerance() const { return app::positionTolerance(reference); }
 };
 
 }  // namespace flexmoor::app

@@ -11,7 +11,7 @@ class WaveSpectrum;
 
 namespace flexmoor::app {
 
-// How the sea's components were made (build_hydro.cpp), for the results' metadata (the netCDF
+// How the sea's components were made (build_ocean.cpp), for the results' metadata (the netCDF
 // global attributes sea_kind, sea_components, sea_discretisation, sea_seed, sea_repeat_period and
 // a spectrum's sea_spectrum_*, netcdf_writer.hpp).
 struct SeaOrigin {

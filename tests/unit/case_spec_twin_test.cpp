@@ -130,6 +130,11 @@ TEST(CaseSpecTwin, WhatTheSpecificationsGetWrongIsRefusedWithItsReason) {
   for (int n = 0; n < spec.mesh.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k) spec.conditions.supports.push_back({n, k, 0.0, nullptr, 0});
   refused(spec, "every dof is fixed");
+  spec = example1InCode();  // a liquid in no membranes, one in an element not in the mesh
+  spec.enclosed_fluids.push_back({{}, {1000.0, 0.0, 0.0, 0.0}, 0, "water in nothing"});
+  spec.enclosed_fluids.push_back({{99}, {1000.0, 0.0, 0.0, 0.0}, 0, "water in 99"});
+  refused(spec, "ex1-in-code: water in nothing.on: names no membranes");
+  refused(spec, "ex1-in-code: water in 99.on: element 99 is not in the mesh (8 elements, 0-based)");
 }
 
 }  // namespace

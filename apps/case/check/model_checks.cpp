@@ -1,4 +1,4 @@
-// The checks of a case's built model and steps (checkModel, case_builder.hpp): what would make a
+// The checks of a case's built model and steps (model_checks.hpp): what would make a
 // run fail obscurely or give a wrong number, refused with the line of the element, node or step.
 //   geometry   every element's Jacobian positive at its integration points
 //              (Element::minRelativeJacobian)
@@ -14,13 +14,15 @@
 //   steps      modes and dynamic steps need a mass on every free dof; no more modes than free
 //              dofs; a warning for a time step too long for a periodic history or a wave it is
 //              driven by.
-//   ocean      no node and no body below the seabed; hydro: sections on lines only.
+//   ocean      no node and no body below the seabed; Morison loads and axial damping on lines
+//              only.
+#include "apps/case/check/model_checks.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <set>
 
 #include "apps/case/build/node_index.hpp"
-#include "apps/case/case_builder.hpp"
 #include "apps/case/check/rigid_translations.hpp"
 #include "apps/common/format_number.hpp"
 
@@ -40,13 +42,13 @@ constexpr double kStepsPerPeriod = 10.0;
 // Messages and warnings beyond this many of one kind are summed up in one line.
 constexpr int kMaxReported = 20;
 
-std::string nodeName(const CaseBuilder& b, int node) {
-  return "node " + std::to_string(b.c.node_ids[node]);
+std::string nodeName(const CheckedModel& k, int node) {
+  return "node " + std::to_string(k.c.node_ids[node]);
 }
 
-std::string elementName(const CaseBuilder& b, int e) {
-  return "element " + std::to_string(e + 1) + " (" + b.model.element(e).typeName() + " of " +
-         b.element_origin[e].where + ")";
+std::string elementName(const CheckedModel& k, int e) {
+  return "element " + std::to_string(e + 1) + " (" + k.model().element(e).typeName() + " of " +
+         k.origins.elements[e].where + ")";
 }
 
 std::string stepName(const StepSpec& step) { return "step '" + step.name + "'"; }
@@ -55,18 +57,18 @@ bool isLine(const element::Element& e) {
   return e.typeName().rfind("cable", 0) == 0 || e.typeName().rfind("axisymmetric", 0) == 0;
 }
 
-void checkGeometry(CaseBuilder& b) {
-  for (int e = 0; e < b.model.elementCount(); ++e) {
-    const element::Element& element = b.model.element(e);
-    const double J = element.minRelativeJacobian(b.model.reference());
+void checkGeometry(const CheckedModel& k) {
+  for (int e = 0; e < k.model().elementCount(); ++e) {
+    const element::Element& element = k.model().element(e);
+    const double J = element.minRelativeJacobian(k.model().reference());
     if (J > kCollapsed) continue;
     const bool axisymmetric = element.typeName().rfind("axisymmetric", 0) == 0;
     const std::string hint =
         isLine(element) ? std::string("are its middle nodes strictly between its ends, in order") +
                               (axisymmetric ? ", and its points at x > 0 (the radius)?" : "?")
                         : "are its nodes in order around it, and not on one line?";
-    b.diag.error(b.element_origin[e].line,
-                 elementName(b, e) + ": " +
+    k.diag.error(k.origins.elements[e].line,
+                 elementName(k, e) + ": " +
                      (isLine(element) ? "folded or collapsed" : "inverted or collapsed") +
                      ": its Jacobian is not positive at every integration point (got " +
                      formatNumber(J) + " relative to a regular element's, expected > 0; " + hint +
@@ -92,17 +94,17 @@ class Components {
 };
 
 // For each node, another node at the same point that no element joins to it (or -1).
-std::vector<int> unjoinedTwins(const CaseBuilder& b,
+std::vector<int> unjoinedTwins(const CheckedModel& k,
                                const std::vector<std::vector<int>>& adjacent) {
-  const model::NodalField& X = b.model.reference();
+  const model::NodalField& X = k.model().reference();
   std::vector<int> twin(X.cols(), -1);
   if (X.cols() == 0) return twin;
-  const double tolerance = positionTolerance(b);
+  const double tolerance = k.mesh.positionTolerance();
   if (!(tolerance > 0.0)) return twin;
   const NodeIndex index(X, tolerance);
   const auto joined = [&](int a, int c) {
     for (int e : adjacent[a])
-      for (int n : b.model.element(e).nodes())
+      for (int n : k.model().element(e).nodes())
         if (n == c) return true;
     return false;
   };
@@ -115,22 +117,22 @@ std::vector<int> unjoinedTwins(const CaseBuilder& b,
   return twin;
 }
 
-std::string twinHint(const CaseBuilder& b, int node, int twin) {
-  return "; " + nodeName(b, node) + " is at the same point as " + nodeName(b, twin) + " (line " +
-         std::to_string(b.node_line[twin]) +
+std::string twinHint(const CheckedModel& k, int node, int twin) {
+  return "; " + nodeName(k, node) + " is at the same point as " + nodeName(k, twin) + " (line " +
+         std::to_string(k.origins.node_lines[twin]) +
          "), which no element joins to it: did you mean them merged into one node?";
 }
 
 // The named lines and surfaces a group of nodes (by its root) holds, for the messages.
-std::string namesOf(CaseBuilder& b, Components& parts, int root) {
+std::string namesOf(const CheckedModel& k, Components& parts, int root) {
   std::string names;
   const auto add = [&](const char* what, const std::map<std::string, std::vector<int>>& sets) {
     for (const auto& [name, nodes] : sets)
       if (!nodes.empty() && parts.root(nodes.front()) == root)
         names += (names.empty() ? "" : ", ") + std::string(what) + " '" + name + "'";
   };
-  add("line", b.c.lines);
-  add("surface", b.surfaces);
+  add("line", k.c.lines);
+  add("surface", k.surfaces);
   return names;
 }
 
@@ -142,34 +144,31 @@ struct GroupName {
   std::string is;  // "is" or "are"
 };
 
-GroupName groupName(CaseBuilder& b, Components& parts, int root, int size) {
-  const std::string names = namesOf(b, parts, root);
+GroupName groupName(const CheckedModel& k, Components& parts, int root, int size) {
+  const std::string names = namesOf(k, parts, root);
   const std::string nodes = std::to_string(size) + " nodes";
   if (names.empty())
-    return {nodeName(b, root) + " and the " +
+    return {nodeName(k, root) + " and the " +
                 (size == 2 ? std::string("node") : std::to_string(size - 1) + " nodes") +
                 " joined to it by elements",
-            b.node_line[root], "are"};
-  int line = b.node_line[root];
-  for (const std::string& name : b.line_order) {
-    const auto nodes_of = b.c.lines.find(name);
-    if (nodes_of != b.c.lines.end() && !nodes_of->second.empty() &&
-        parts.root(nodes_of->second.front()) == root) {
-      line = b.node_line[nodes_of->second.front()];
+            k.origins.node_lines[root], "are"};
+  int line = k.origins.node_lines[root];
+  for (const CaseLine& named : k.c.named_lines)
+    if (!named.nodes.empty() && parts.root(named.nodes.front()) == root) {
+      line = k.origins.node_lines[named.nodes.front()];
       break;
     }
-  }
   const bool one = names.find(", ") == std::string::npos;
   return {(one ? names : "the group of " + names) + " (" + nodes + ")", line, "is"};
 }
 
-void checkMechanisms(CaseBuilder& b) {
-  const int count = b.model.nodeCount();
+void checkMechanisms(const CheckedModel& k) {
+  const int count = k.model().nodeCount();
   std::vector<std::vector<int>> adjacent(count);  // elements at each node
   Components parts(count);
   std::vector<bool> held(count, false);
-  for (int e = 0; e < b.model.elementCount(); ++e) {
-    const element::Element& element = b.model.element(e);
+  for (int e = 0; e < k.model().elementCount(); ++e) {
+    const element::Element& element = k.model().element(e);
     if (element.typeName() == "point_mass") continue;
     for (int n : element.nodes()) {
       adjacent[n].push_back(e);
@@ -177,20 +176,20 @@ void checkMechanisms(CaseBuilder& b) {
       parts.join(element.nodes().front(), n);
     }
   }
-  const std::vector<int> twin = unjoinedTwins(b, adjacent);
+  const std::vector<int> twin = unjoinedTwins(k, adjacent);
 
   // Free dofs of nodes that no element holds.
   for (int node = 0; node < count; ++node) {
     std::string free;
-    for (int k = 0; k < 3; ++k)
-      if (!b.model.isConstrained(node, k))
-        free += (free.empty() ? "" : ", ") + std::string(kAxis[k]);
+    for (int d = 0; d < 3; ++d)
+      if (!k.model().isConstrained(node, d))
+        free += (free.empty() ? "" : ", ") + std::string(kAxis[d]);
     if (held[node] || free.empty()) continue;
-    b.diag.error(b.node_line[node], nodeName(b, node) + ": no element holds it and its " + free +
-                                        " are not fixed (expected it connected or fixed: its "
-                                        "stiffness would be singular" +
-                                        (twin[node] >= 0 ? twinHint(b, node, twin[node]) : "") +
-                                        ")");
+    k.diag.error(k.origins.node_lines[node],
+                 nodeName(k, node) + ": no element holds it and its " + free +
+                     " are not fixed (expected it connected or fixed: its "
+                     "stiffness would be singular" +
+                     (twin[node] >= 0 ? twinHint(k, node, twin[node]) : "") + ")");
   }
 
   // Rigid translations nothing holds (rigid_translations.hpp), named by the group's lines.
@@ -205,23 +204,23 @@ void checkMechanisms(CaseBuilder& b) {
         astray[parts.root(node)] < 0)
       astray[parts.root(node)] = node;
   }
-  for (const UnrestrainedGroup& g : unrestrainedGroups(b, root)) {
+  for (const UnrestrainedGroup& g : unrestrainedGroups(k, root)) {
     const int r = g.root;
     std::string free;
-    for (int k = 0; k < 3; ++k)
-      if (g.free & (1 << k)) free += (free.empty() ? "" : ", ") + std::string(kAxis[k]);
-    const std::string hint = astray[r] >= 0 ? twinHint(b, astray[r], twin[astray[r]]) : "";
-    const GroupName name = groupName(b, parts, r, size[r]);
+    for (int d = 0; d < 3; ++d)
+      if (g.free & (1 << d)) free += (free.empty() ? "" : ", ") + std::string(kAxis[d]);
+    const std::string hint = astray[r] >= 0 ? twinHint(k, astray[r], twin[astray[r]]) : "";
+    const GroupName name = groupName(k, parts, r, size[r]);
     std::string got = "no support fixing " + free + " on any of its nodes";
     if (g.step >= 0 && g.released) {
-      const StepSpec& step = b.c.steps[g.step];
+      const StepSpec& step = k.c.steps[g.step];
       got += " from " + stepName(step) + " (line " + std::to_string(step.where.line) +
              ") on, whose release: lets the last of them go";
     }
     got += ", nor a spring or element joining it to one";
     if (!g.held_other.empty()) got += "; " + g.held_other;
     if (g.step < 0) {
-      b.diag.warning(name.line, name.text + " " + name.is + " free to move in " + free +
+      k.diag.warning(name.line, name.text + " " + name.is + " free to move in " + free +
                                     " as a rigid body in the dynamic steps, where only its "
                                     "inertia resists it (got " +
                                     got +
@@ -230,7 +229,7 @@ void checkMechanisms(CaseBuilder& b) {
                                     free + " on one of its nodes" + hint + ")");
       continue;
     }
-    b.diag.error(name.line, name.text + " " + name.is + " free to move in " + free +
+    k.diag.error(name.line, name.text + " " + name.is + " free to move in " + free +
                                 " as a rigid body: nothing holds it there (got " + got +
                                 "; expected an anchor, a fairlead or another support fixing " +
                                 free + " on one of its nodes" + hint + ")");
@@ -245,49 +244,49 @@ void checkMechanisms(CaseBuilder& b) {
       continue;
     }
     ++reported;
-    b.diag.warning(b.node_line[node],
-                   nodeName(b, node) + " and " + nodeName(b, twin[node]) + " (line " +
-                       std::to_string(b.node_line[twin[node]]) +
+    k.diag.warning(k.origins.node_lines[node],
+                   nodeName(k, node) + " and " + nodeName(k, twin[node]) + " (line " +
+                       std::to_string(k.origins.node_lines[twin[node]]) +
                        ") are at one point and no element joins them: did you mean them merged "
                        "into one node?");
   }
   if (more > 0)
-    b.diag.warning(0, "and " + std::to_string(more) + " more pairs of nodes at one point");
+    k.diag.warning(0, "and " + std::to_string(more) + " more pairs of nodes at one point");
 }
 
 // Mass of each dof of the model (the diagonal of its consistent mass matrix, Eq. 4.40, 4.49).
-std::vector<double> dofMass(const CaseBuilder& b, std::set<std::string>& massless_sections) {
-  std::vector<double> mass(3 * b.model.nodeCount(), 0.0);
-  const model::State state = b.model.initialState();
+std::vector<double> dofMass(const CheckedModel& k, std::set<std::string>& massless_sections) {
+  std::vector<double> mass(3 * k.model().nodeCount(), 0.0);
+  const model::State state = k.model().initialState();
   Eigen::MatrixXd M;
-  for (int e = 0; e < b.model.elementCount(); ++e) {
-    const element::Element& element = b.model.element(e);
-    element.mass({b.model.reference(), state, e}, element::MassKind::Consistent, M);
+  for (int e = 0; e < k.model().elementCount(); ++e) {
+    const element::Element& element = k.model().element(e);
+    element.mass({k.model().reference(), state, e}, element::MassKind::Consistent, M);
     const std::vector<int>& nodes = element.nodes();
     for (size_t I = 0; I < nodes.size(); ++I)
-      for (int k = 0; k < 3; ++k) mass[3 * nodes[I] + k] += M(3 * I + k, 3 * I + k);
-    if (!(M.diagonal().sum() > 0.0) && !b.element_origin[e].section.empty())
-      massless_sections.insert(b.element_origin[e].section);
+      for (int d = 0; d < 3; ++d) mass[3 * nodes[I] + d] += M(3 * I + d, 3 * I + d);
+    if (!(M.diagonal().sum() > 0.0) && !k.origins.elements[e].section.empty())
+      massless_sections.insert(k.origins.elements[e].section);
   }
   return mass;
 }
 
-void checkMass(CaseBuilder& b, const StepSpec& step, const std::vector<double>& mass,
+void checkMass(const CheckedModel& k, const StepSpec& step, const std::vector<double>& mass,
                const std::set<std::string>& massless_sections) {
   int missing = 0, first = -1;
-  for (int node = 0; node < b.model.nodeCount(); ++node)
-    for (int k = 0; k < 3; ++k)
-      if (!b.model.isConstrained(node, k) && !(mass[3 * node + k] > 0.0)) {
+  for (int node = 0; node < k.model().nodeCount(); ++node)
+    for (int d = 0; d < 3; ++d)
+      if (!k.model().isConstrained(node, d) && !(mass[3 * node + d] > 0.0)) {
         ++missing;
         if (first < 0) first = node;
       }
   if (missing == 0) return;
   std::string sections;
   for (const std::string& s : massless_sections) sections += (sections.empty() ? "" : ", ") + s;
-  b.diag.error(step.where.line,
+  k.diag.error(step.where.line,
                stepName(step) + ": needs a mass on every free dof, and " + std::to_string(missing) +
-                   " have none, the first at " + nodeName(b, first) + " (line " +
-                   std::to_string(b.node_line[first]) + ") (got " +
+                   " have none, the first at " + nodeName(k, first) + " (line " +
+                   std::to_string(k.origins.node_lines[first]) + ") (got " +
                    (sections.empty() ? std::string("only massless elements there")
                                      : "no density: on section " + sections) +
                    ", expected a density: on the sections, or a point_mass on those nodes)");
@@ -300,16 +299,16 @@ struct Forcing {
 };
 
 // The name of a history, for the warnings.
-std::string historyName(const CaseBuilder& b, const model::TimeFunction* f) {
-  for (const auto& [name, h] : b.histories)
+std::string historyName(const CheckedModel& k, const model::TimeFunction* f) {
+  for (const auto& [name, h] : k.histories)
     if (h.get() == f) return name;
   return "";
 }
 
 // The periodic histories that drive the model (of loads, pressures and prescribed motions) and
 // the periods of the waves.
-std::vector<Forcing> periodicForcing(const CaseBuilder& b) {
-  const model::Model& m = b.model;
+std::vector<Forcing> periodicForcing(const CheckedModel& k) {
+  const model::Model& m = k.model();
   std::set<const model::TimeFunction*> used;
   for (const model::NodalLoad& load : m.nodalLoads()) used.insert(load.history.get());
   for (const model::PressureLoad& p : m.pressures()) used.insert(p.history.get());
@@ -318,18 +317,18 @@ std::vector<Forcing> periodicForcing(const CaseBuilder& b) {
   std::vector<Forcing> periodic;
   for (const model::TimeFunction* f : used)
     if (f && f->period() > 0.0)
-      periodic.push_back({f->period(), "history '" + historyName(b, f) + "'"});
-  for (size_t i = 0; i < b.hydro.waves.size(); ++i)
-    periodic.push_back({b.hydro.waves[i].period, "wave " + std::to_string(i + 1) + " (line " +
-                                                     std::to_string(b.hydro.waves[i].line) + ")"});
+      periodic.push_back({f->period(), "history '" + historyName(k, f) + "'"});
+  for (size_t i = 0; i < k.ocean.waves.size(); ++i)
+    periodic.push_back({k.ocean.waves[i].period, "wave " + std::to_string(i + 1) + " (line " +
+                                                     std::to_string(k.ocean.waves[i].line) + ")"});
   // An irregular sea's shortest component: the top of a spectrum's band, a record's cutoff or
   // its Nyquist frequency.
   const double two_pi = 2.0 * std::acos(-1.0);
-  if (const auto& s = b.hydro.spectral)
+  if (const auto& s = k.ocean.spectral)
     periodic.push_back({two_pi / (s->options.omega_max_ratio * s->spectrum.peakFrequency()),
                         "the sea's shortest component (the top of waves.band, line " +
                             std::to_string(s->line) + ")"});
-  if (const auto& m = b.hydro.measured)
+  if (const auto& m = k.ocean.measured)
     periodic.push_back(
         {two_pi / std::min(m->omega_cutoff, std::acos(-1.0) / m->record.dt),
          "the record's shortest component (waves.measured, line " + std::to_string(m->line) + ")"});
@@ -347,14 +346,15 @@ void boundAdaptiveSteps(StepSpec& step, const std::vector<Forcing>& periodic) {
   }
 }
 
-void checkTimeStep(CaseBuilder& b, const StepSpec& step, const std::vector<Forcing>& periodic) {
+void checkTimeStep(const CheckedModel& k, const StepSpec& step,
+                   const std::vector<Forcing>& periodic) {
   double dt = step.adaptive() ? step.dynamic.adaptive->dt_max : 0.0;
   for (const solve::TimeSegment& s : step.dynamic.schedule) dt = std::max(dt, s.dt);
-  const std::string time = unitNames(b.c.units).time;
+  const std::string time = unitNames(k.c.units).time;
   for (const Forcing& f : periodic) {
     const double ratio = dt / f.period;
     if (ratio * kStepsPerPeriod <= 1.0) continue;
-    b.diag.warning(step.where.line,
+    k.diag.warning(step.where.line,
                    stepName(step) + ": dt = " + formatNumber(dt) + " " + time + " is " +
                        formatNumber(ratio) + " times the period " + formatNumber(f.period) + " " +
                        time + " of " + f.name + " (dt / period = " + formatNumber(ratio) +
@@ -364,29 +364,29 @@ void checkTimeStep(CaseBuilder& b, const StepSpec& step, const std::vector<Forci
   }
 }
 
-void checkSteps(CaseBuilder& b) {
-  const bool needs_mass = std::any_of(b.c.steps.begin(), b.c.steps.end(), [](const StepSpec& s) {
+void checkSteps(const CheckedModel& k) {
+  const bool needs_mass = std::any_of(k.c.steps.begin(), k.c.steps.end(), [](const StepSpec& s) {
     return s.kind == StepSpec::Kind::Modes || s.kind == StepSpec::Kind::Dynamic;
   });
   std::set<std::string> massless_sections;
   const std::vector<double> mass =
-      needs_mass ? dofMass(b, massless_sections) : std::vector<double>();
-  const std::vector<Forcing> periodic = periodicForcing(b);
-  for (StepSpec& step : b.c.steps) {
+      needs_mass ? dofMass(k, massless_sections) : std::vector<double>();
+  const std::vector<Forcing> periodic = periodicForcing(k);
+  for (StepSpec& step : k.c.steps) {
     if (step.kind == StepSpec::Kind::Modes || step.kind == StepSpec::Kind::Dynamic)
-      checkMass(b, step, mass, massless_sections);
-    if (step.kind == StepSpec::Kind::Modes && step.modes.modes > b.model.equationCount())
-      b.diag.error(step.where.line, stepName(step) + ": more modes than free dofs (got count: " +
+      checkMass(k, step, mass, massless_sections);
+    if (step.kind == StepSpec::Kind::Modes && step.modes.modes > k.model().equationCount())
+      k.diag.error(step.where.line, stepName(step) + ": more modes than free dofs (got count: " +
                                         std::to_string(step.modes.modes) + ", expected at most " +
-                                        std::to_string(b.model.equationCount()) + ")");
-    if (step.kind == StepSpec::Kind::Dynamic) checkTimeStep(b, step, periodic);
+                                        std::to_string(k.model().equationCount()) + ")");
+    if (step.kind == StepSpec::Kind::Dynamic) checkTimeStep(k, step, periodic);
     if (step.adaptive()) boundAdaptiveSteps(step, periodic);
   }
 }
 
 // "below the seabed (got z = -105 m, expected z >= -100 m, the bed's height at x = 3 m, y = 0 m)"
-std::string belowTheBed(const CaseBuilder& b, const Eigen::Vector3d& x, double bed) {
-  const std::string unit = " " + unitNames(b.c.units).length;
+std::string belowTheBed(const CheckedModel& k, const Eigen::Vector3d& x, double bed) {
+  const std::string unit = " " + unitNames(k.c.units).length;
   return "below the seabed (got z = " + formatNumber(x.z()) + unit +
          ", expected z >= " + formatNumber(bed) + unit +
          ", the bed's height at x = " + formatNumber(x.x()) + unit +
@@ -395,22 +395,22 @@ std::string belowTheBed(const CaseBuilder& b, const Eigen::Vector3d& x, double b
 
 // Nodes and bodies below the bed (more than the position tolerance) at the start; a node that
 // carries a body is reported as the body.
-void checkSeabed(CaseBuilder& b) {
-  const model::NodalField& X = b.model.reference();
-  const double tolerance = positionTolerance(b);
+void checkSeabed(const CheckedModel& k) {
+  const model::NodalField& X = k.model().reference();
+  const double tolerance = k.mesh.positionTolerance();
   const auto below = [&](int node) {
-    return X(2, node) < b.hydro.bed.height(X(0, node), X(1, node)) - tolerance;
+    return X(2, node) < k.ocean.bed.height(X(0, node), X(1, node)) - tolerance;
   };
   std::set<int> bodies;
-  for (const BodySpec& body : b.hydro.bodies) {
+  for (const BodySpec& body : k.ocean.bodies) {
     bodies.insert(body.node);
     if (!below(body.node)) continue;
     const Eigen::Vector3d x = X.col(body.node);
-    b.diag.error(body.line, body.where + ": its " + nodeName(b, body.node) + " is " +
-                                belowTheBed(b, x, b.hydro.bed.height(x.x(), x.y())));
+    k.diag.error(body.line, body.where + ": its " + nodeName(k, body.node) + " is " +
+                                belowTheBed(k, x, k.ocean.bed.height(x.x(), x.y())));
   }
   int reported = 0, more = 0;
-  for (int node = 0; node < b.model.nodeCount(); ++node) {
+  for (int node = 0; node < k.model().nodeCount(); ++node) {
     if (bodies.count(node) || !below(node)) continue;
     if (reported == kMaxReported) {
       ++more;
@@ -418,39 +418,59 @@ void checkSeabed(CaseBuilder& b) {
     }
     ++reported;
     const Eigen::Vector3d x = X.col(node);
-    b.diag.error(b.node_line[node],
-                 nodeName(b, node) + ": " + belowTheBed(b, x, b.hydro.bed.height(x.x(), x.y())));
+    k.diag.error(k.origins.node_lines[node],
+                 nodeName(k, node) + ": " + belowTheBed(k, x, k.ocean.bed.height(x.x(), x.y())));
   }
-  if (more > 0) b.diag.error(0, "and " + std::to_string(more) + " more nodes below the seabed");
+  if (more > 0) k.diag.error(0, "and " + std::to_string(more) + " more nodes below the seabed");
 }
 
-// Morison loads and axial damping act on cable elements along their axis; a hoop ring has none.
-void checkHydroSections(CaseBuilder& b) {
-  for (int e = 0; e < b.model.elementCount(); ++e) {
-    const std::string& section = b.element_origin[e].section;
-    if (b.element_types[e] != "hoop_cable" || section.empty() || !b.sections.at(section)) continue;
-    const SectionSpec& spec = *b.sections.at(section);
-    if (spec.hydro)
-      b.diag.error(b.element_origin[e].line,
-                   elementName(b, e) + ": Morison loads act on lines only (got section '" +
-                       section +
-                       "' with hydro: on a hoop ring, expected a section without hydro:)");
-    if (spec.section.axial_damping > 0.0 || spec.section.damping_ratio > 0.0)
-      b.diag.error(b.element_origin[e].line,
-                   elementName(b, e) + ": axial damping acts on lines only (got section '" +
-                       section +
-                       "' with damping: on a hoop ring, expected a section without damping:)");
+// Morison loads and axial damping act on cable elements along their axis; a hoop ring, a membrane,
+// a spring or a point mass has none.
+void checkLineLoads(const CheckedModel& k) {
+  std::vector<bool> morison(k.mesh.elementCount(), false);
+  for (const MorisonSpec& m : k.ocean.morison)
+    for (const int e : m.elements) morison[e] = true;
+  for (int e = 0; e < k.mesh.elementCount(); ++e) {
+    const ElementSpec& element = k.mesh.elements[e];
+    if (element.kind == ElementSpec::Kind::Cable) continue;
+    const bool hoop = element.kind == ElementSpec::Kind::HoopCable;
+    const bool damped = hoop && (element.cable_section.axial_damping > 0.0 ||
+                                 element.cable_section.damping_ratio > 0.0);
+    if (!morison[e] && !damped) continue;
+    const ElementOrigin& origin = k.origins.elements[e];
+    const std::string on =
+        " on " + (hoop ? std::string("a hoop ring") : "a " + k.model().element(e).typeName());
+    // "Morison loads act on lines only (got section 'wire' with hydro: on a hoop ring, ...)"
+    const auto report = [&](const std::string& what, const char* act, const std::string& key) {
+      const std::string got =
+          origin.section.empty() ? what : "section '" + origin.section + "' with " + key;
+      const std::string expected =
+          origin.section.empty() ? what + " on cables only" : "a section without " + key;
+      k.diag.error(origin.line, elementName(k, e) + ": " + what + " " + act +
+                                    " on lines only (got " + got + on + ", expected " + expected +
+                                    ")");
+    };
+    if (morison[e]) report("Morison loads", "act", "hydro:");
+    if (damped) report("axial damping", "acts", "damping:");
   }
 }
 
 }  // namespace
 
-void checkModel(CaseBuilder& b) {
-  checkGeometry(b);
-  checkMechanisms(b);
-  checkSteps(b);
-  if (b.hydro.has_water) checkSeabed(b);
-  checkHydroSections(b);
+ModelOrigins ModelOrigins::sourceless(int nodes, int elements) {
+  ModelOrigins origins;
+  origins.node_lines.assign(nodes, 0);
+  for (int e = 0; e < elements; ++e)
+    origins.elements.push_back({0, "mesh.elements[" + std::to_string(e) + "]", ""});
+  return origins;
+}
+
+void checkModel(const CheckedModel& k) {
+  checkGeometry(k);
+  checkMechanisms(k);
+  checkSteps(k);
+  if (k.ocean.has_water) checkSeabed(k);
+  checkLineLoads(k);
 }
 
 }  // namespace flexmoor::app

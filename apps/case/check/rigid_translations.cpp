@@ -25,11 +25,11 @@ struct VerticalLoads {
 
 // An element's mass that weighs: the sum of its consistent mass matrix over the vertical dofs
 // (Eq. 4.40, 4.49: its total mass), a point mass's own (a liquid's lumped mass weighs nothing).
-double weighingMass(const CaseBuilder& b, int e, const model::State& state, Eigen::MatrixXd& M) {
-  const element::Element& element = b.model.element(e);
-  if (b.element_types[e] == "point_mass")
-    return static_cast<const element::PointMassElement&>(element).weighingMass();
-  element.mass({b.model.reference(), state, e}, element::MassKind::Consistent, M);
+double weighingMass(const CheckedModel& k, int e, const model::State& state, Eigen::MatrixXd& M) {
+  const element::Element& element = k.model().element(e);
+  if (const auto* point = dynamic_cast<const element::PointMassElement*>(&element))
+    return point->weighingMass();
+  element.mass({k.model().reference(), state, e}, element::MassKind::Consistent, M);
   const int n = static_cast<int>(element.nodes().size());
   double mass = 0.0;
   for (int I = 0; I < n; ++I)
@@ -38,34 +38,36 @@ double weighingMass(const CaseBuilder& b, int e, const model::State& state, Eige
 }
 
 // A line's reference length: the chords between its nodes (exact for straight elements).
-double referenceLength(const CaseBuilder& b, int e) {
-  const std::vector<int>& nodes = b.model.element(e).nodes();
+double referenceLength(const CheckedModel& k, int e) {
+  const std::vector<int>& nodes = k.model().element(e).nodes();
   double length = 0.0;
   for (size_t i = 1; i < nodes.size(); ++i)
-    length += (b.model.reference().col(nodes[i]) - b.model.reference().col(nodes[i - 1])).norm();
+    length +=
+        (k.model().reference().col(nodes[i]) - k.model().reference().col(nodes[i - 1])).norm();
   return length;
 }
 
 // The vertical loads of the groups in `of` (by their roots).
-std::map<int, VerticalLoads> verticalLoads(const CaseBuilder& b, const std::vector<int>& root,
+std::map<int, VerticalLoads> verticalLoads(const CheckedModel& k, const std::vector<int>& root,
                                            const std::set<int>& of) {
   std::map<int, VerticalLoads> loads;
-  const HydroSpec& h = b.hydro;
-  const double g_z = b.model.gravity().z();
+  const OceanSpec& h = k.ocean;
+  const double g_z = k.model().gravity().z();
   const double buoyancy = h.has_water ? h.water.density * h.water.gravity : 0.0;  // per volume
-  const model::State state = b.model.initialState();
+  const model::State state = k.model().initialState();
   Eigen::MatrixXd M;
-  for (int e = 0; e < b.model.elementCount(); ++e) {
-    const int r = root[b.model.element(e).nodes().front()];
+  // The diameter of the elements with Morison loads (of the mesh: not the liquids' masses).
+  std::vector<double> diameters(k.model().elementCount(), 0.0);
+  for (const MorisonSpec& m : h.morison)
+    for (const int e : m.elements) diameters[e] = m.hydro.coefficients.diameter;
+  for (int e = 0; e < k.model().elementCount(); ++e) {
+    const int r = root[k.model().element(e).nodes().front()];
     if (!of.count(r)) continue;  // a point mass off every group, or a group held vertically
     VerticalLoads& v = loads[r];
-    v.upward += weighingMass(b, e, state, M) * g_z;
-    const auto section = b.sections.find(b.element_origin[e].section);
-    const bool line = b.element_types[e] == "cable" && section != b.sections.end() &&
-                      section->second && section->second->hydro;
-    if (!line || !h.has_water) continue;
-    const double d = section->second->hydro->coefficients.diameter;
-    v.upward += buoyancy * M_PI * d * d / 4.0 * referenceLength(b, e);
+    v.upward += weighingMass(k, e, state, M) * g_z;
+    const double d = diameters[e];
+    if (!(d > 0.0) || k.mesh.elements[e].kind != ElementSpec::Kind::Cable || !h.has_water) continue;
+    v.upward += buoyancy * M_PI * d * d / 4.0 * referenceLength(k, e);
     v.floats = true;  // a point above the surface carries no buoyancy
     v.touches_bed = v.touches_bed || h.has_contact;
   }
@@ -76,43 +78,43 @@ std::map<int, VerticalLoads> verticalLoads(const CaseBuilder& b, const std::vect
     v.floats = v.floats || body.body.diameter > 0.0;  // a sphere's cap; a point body: all or none
     v.touches_bed = v.touches_bed || (h.has_contact && body.body.volume > 0.0);
   }
-  for (const model::NodalLoad& load : b.model.nodalLoads())
+  for (const model::NodalLoad& load : k.model().nodalLoads())
     if (of.count(root[load.node])) loads[root[load.node]].upward += load.force.z();
   return loads;
 }
 
 // The directions supports fix on each group, the supports `released` let go holding nothing.
-std::map<int, int> supported(const CaseBuilder& b, const std::vector<int>& root,
+std::map<int, int> supported(const CheckedModel& k, const std::vector<int>& root,
                              const std::set<std::pair<int, int>>& released) {
   std::map<int, int> fixed;
-  for (int node = 0; node < b.model.nodeCount(); ++node) {
+  for (int node = 0; node < k.model().nodeCount(); ++node) {
     if (root[node] < 0) continue;
     int& mask = fixed[root[node]];
-    for (int k = 0; k < 3; ++k)
-      if (b.model.isConstrained(node, k) && !released.count({node, k})) mask |= 1 << k;
+    for (int d = 0; d < 3; ++d)
+      if (k.model().isConstrained(node, d) && !released.count({node, d})) mask |= 1 << d;
   }
   return fixed;
 }
 
 }  // namespace
 
-std::vector<UnrestrainedGroup> unrestrainedGroups(const CaseBuilder& b,
+std::vector<UnrestrainedGroup> unrestrainedGroups(const CheckedModel& k,
                                                   const std::vector<int>& root) {
   // The directions supports fix on each group in each step, after the releases up to it.
   std::vector<std::map<int, int>> fixed;
   std::set<std::pair<int, int>> released;
-  for (const StepSpec& step : b.c.steps) {
+  for (const StepSpec& step : k.c.steps) {
     const bool more = !step.release.empty();
     released.insert(step.release.begin(), step.release.end());
-    fixed.push_back(fixed.empty() || more ? supported(b, root, released) : fixed.back());
+    fixed.push_back(fixed.empty() || more ? supported(k, root, released) : fixed.back());
   }
-  const std::map<int, int> initial = supported(b, root, {});
+  const std::map<int, int> initial = supported(k, root, {});
 
   // What holds the groups but supports, and the text that says so: radially the hoop
   // stiffness, vertically the bed or the surface for the groups some step leaves free in z.
   std::map<int, int> other;
   std::map<int, std::string> other_text;
-  for (const auto& element : b.model.elements())
+  for (const auto& element : k.model().elements())
     if (element->typeName().rfind("axisymmetric", 0) == 0 || element->typeName() == "hoop_cable") {
       const int r = root[element->nodes().front()];
       if (r >= 0 && !(other[r] & kX)) {
@@ -124,7 +126,7 @@ std::vector<UnrestrainedGroup> unrestrainedGroups(const CaseBuilder& b,
   for (const std::map<int, int>& step : fixed)
     for (const auto& [r, mask] : step)
       if (!(mask & kZ)) free_in_z.insert(r);
-  for (const auto& [r, v] : verticalLoads(b, root, free_in_z)) {
+  for (const auto& [r, v] : verticalLoads(k, root, free_in_z)) {
     const char* by = v.upward < 0.0 && v.touches_bed ? "the seabed its weight in water rests it on"
                      : v.upward > 0.0 && v.floats ? "the water's surface its buoyancy floats it at"
                                                   : nullptr;
@@ -136,8 +138,8 @@ std::vector<UnrestrainedGroup> unrestrainedGroups(const CaseBuilder& b,
   // Each group's first step that needs a stiffness and leaves a direction free, else its first
   // dynamic step that does.
   std::map<int, UnrestrainedGroup> found;
-  for (size_t i = 0; i < b.c.steps.size(); ++i) {
-    const bool stiff = needsStiffness(b.c.steps[i]);
+  for (size_t i = 0; i < k.c.steps.size(); ++i) {
+    const bool stiff = needsStiffness(k.c.steps[i]);
     for (const auto& [r, mask] : fixed[i]) {
       const int free = kAll & ~(mask | other[r]);
       if (free == 0) continue;

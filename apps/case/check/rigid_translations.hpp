@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/case_builder.hpp"
+#include "apps/case/check/model_checks.hpp"
 
 namespace flexmoor::app {
 
@@ -34,7 +34,7 @@ struct UnrestrainedGroup {
 
 // The groups with a direction nothing holds in some step. root[node] is the smallest node of the
 // node's group, for the nodes that elements join (point masses join nothing), and -1 for others.
-std::vector<UnrestrainedGroup> unrestrainedGroups(const CaseBuilder& b,
+std::vector<UnrestrainedGroup> unrestrainedGroups(const CheckedModel& k,
                                                   const std::vector<int>& root);
 
 }  // namespace flexmoor::app

@@ -45,7 +45,7 @@ std::optional<int> nodeAt(CaseBuilder& b, const YAML::Node& n, const std::string
     const double d = (b.mesh.position(node) - *x).norm();
     if (nearest < 0 || d < distance) std::tie(nearest, distance) = std::pair(node, d);
   }
-  if (nearest >= 0 && distance <= positionTolerance(b)) return nearest;
+  if (nearest >= 0 && distance <= b.mesh.positionTolerance()) return nearest;
   b.diag.error(*at,
                f.path("at") + ": no node there (got " + describeNode(*at) + ", expected " +
                    "the position of a node" +
@@ -78,7 +78,7 @@ std::optional<std::vector<int>> nodesWhere(CaseBuilder& b, const YAML::Node& n,
     b.diag.error(*where, f.path("where") + ": no coordinate (expected one or more of x, y, z)");
     return std::nullopt;
   }
-  const double tolerance = positionTolerance(b);
+  const double tolerance = b.mesh.positionTolerance();
   std::vector<int> nodes;
   for (int node = 0; node < b.mesh.nodeCount(); ++node)
     if (std::all_of(tests.begin(), tests.end(), [&](const auto& t) {
@@ -126,13 +126,6 @@ std::optional<int> lineNode(CaseBuilder& b, const YAML::Node& n, const std::stri
 }
 
 }  // namespace
-
-double positionTolerance(const CaseBuilder& b) {
-  const model::NodalField& X = b.mesh.reference;
-  if (X.cols() == 0) return 0.0;
-  const double size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
-  return 1e-6 * std::max(size, X.cwiseAbs().maxCoeff());
-}
 
 std::optional<int> nodeRef(CaseBuilder& b, const YAML::Node& n, const std::string& path) {
   if (n.IsMap() && n["at"]) return nodeAt(b, n, path);

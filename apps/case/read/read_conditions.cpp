@@ -144,7 +144,7 @@ void readPressure(CaseBuilder& b, const YAML::Node& item, const std::string& pat
 }
 
 // The incident wave pressure of the sea on the membranes of surfaces (built with the ocean,
-// build_hydro.cpp): `on:` as for a pressure, and `water_side:` positive (the side the surface
+// build_ocean.cpp): `on:` as for a pressure, and `water_side:` positive (the side the surface
 // normal s x t points to: outside a body whose normals point out) or negative.
 void readWavePressure(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   Fields f(b.diag, item, path, {"on", "water_side"});
@@ -157,7 +157,7 @@ void readWavePressure(CaseBuilder& b, const YAML::Node& item, const std::string&
                         : std::nullopt;
   const auto elements = on ? surfaceMembranes(b, *on, f.path("on")) : std::nullopt;
   if (!elements || !side) return;
-  b.hydro.wave_pressures.push_back({*elements, *side, lineOf(item), path});
+  b.ocean.wave_pressures.push_back({*elements, *side, lineOf(item), path});
 }
 
 // gravity: [gx, gy, gz], or {g: G} for (0, 0, -G); its magnitude within kGravityRange.

@@ -4,11 +4,12 @@
 // P is the liquid's gauge pressure at the elevation Z; with gravity it grows by rho_f g per unit
 // depth below Z (at_z is then required). The specific gravity is relative to the water's density.
 // Read with loads:, resolved after the water; put on the model once it is built
-// (build_enclosed_fluid.cpp): its pressure as a surface load, its mass lumped at the wall's nodes
+// (build_enclosed_fluid.hpp): its pressure as a surface load, its mass lumped at the wall's nodes
 // as point_mass elements without weight.
 #include <cmath>
 #include <set>
 
+#include "apps/case/build/build_enclosed_fluid.hpp"
 #include "apps/case/case_builder.hpp"
 #include "apps/common/format_number.hpp"
 
@@ -16,9 +17,9 @@ namespace flexmoor::app {
 namespace {
 
 // The liquid's density: given, or its specific gravity times the water's.
-std::optional<double> fluidDensity(CaseBuilder& b, const EnclosedFluidSpec& s) {
+std::optional<double> fluidDensity(CaseBuilder& b, const PendingEnclosedFluid& s) {
   if (s.density) return s.density;
-  if (b.hydro.has_water) return *s.specific_gravity * b.hydro.water.density;
+  if (b.ocean.has_water) return *s.specific_gravity * b.ocean.water.density;
   b.diag.error(s.line, s.where +
                            ".specific_gravity: needs the water it is relative to (got no water: "
                            "section, expected water: {density, depth}, or density: instead)");
@@ -27,7 +28,7 @@ std::optional<double> fluidDensity(CaseBuilder& b, const EnclosedFluidSpec& s) {
 
 // The magnitude of the case's gravity, which must act along -z (the liquid's pressure grows
 // downwards); 0 without gravity.
-std::optional<double> fluidGravity(CaseBuilder& b, const EnclosedFluidSpec& s) {
+std::optional<double> fluidGravity(CaseBuilder& b, const PendingEnclosedFluid& s) {
   const Eigen::Vector3d g = b.conditions.gravityVector();
   if (g.isZero(0.0)) return 0.0;
   if (g.z() < 0.0 && std::hypot(g.x(), g.y()) <= 1e-12 * g.norm()) {
@@ -52,7 +53,7 @@ void readEnclosedFluid(CaseBuilder& b, const YAML::Node& item, const std::string
   const YAML::Node* sg = f.find("specific_gravity");
   const YAML::Node* p = f.require("pressure");
   const YAML::Node* at_z = f.find("at_z");
-  EnclosedFluidSpec s;
+  PendingEnclosedFluid s;
   bool ok = true;
   if (density && sg) {
     b.diag.error(*sg, path + ": give either density or specific_gravity, not both");
@@ -82,7 +83,7 @@ void readEnclosedFluid(CaseBuilder& b, const YAML::Node& item, const std::string
 }
 
 void resolveEnclosedFluids(CaseBuilder& b) {
-  for (EnclosedFluidSpec& s : b.enclosed_fluids) {
+  for (PendingEnclosedFluid& s : b.enclosed_fluids) {
     const auto density = fluidDensity(b, s);
     const auto g = fluidGravity(b, s);
     if (!density || !g) continue;
@@ -96,8 +97,20 @@ void resolveEnclosedFluids(CaseBuilder& b) {
     }
     for (size_t i = 0; i < wall.size(); ++i) {
       b.element_types.push_back("point_mass");
-      b.element_origin.push_back({s.line, s.where, ""});
+      b.origins.elements.push_back({s.line, s.where, ""});
     }
+  }
+}
+
+void putEnclosedFluids(CaseBuilder& b) {
+  for (const PendingEnclosedFluid& s : b.enclosed_fluids) {
+    if (!s.fluid) {  // its density or gravity is wrong (reported); its wall may be too
+      const std::string problem = enclosureProblem(b.c, s.elements, s.where);
+      if (!problem.empty()) b.diag.error(s.line, problem);
+      continue;
+    }
+    for (const SpecError& e : buildEnclosedFluids({{s.elements, *s.fluid, s.line, s.where}}, b.c))
+      b.diag.error(e.line, e.message);
   }
 }
 

@@ -1,5 +1,6 @@
 // The ocean sections of a case file: water:, waves:, current:, seabed:, bodies: and a section's
-// hydro: (hydro_spec.hpp). Parsing and validation only; build_hydro.cpp makes the sea and loads.
+// hydro: (apps/problem/ocean_spec.hpp). Parsing and validation only; build_ocean.cpp makes the
+// sea and its loads.
 #include <algorithm>
 #include <cmath>
 
@@ -40,7 +41,7 @@ std::optional<double> waterGravity(CaseBuilder& b, int line) {
 }
 
 // water: {density, depth}, the density within kWaterDensityRange; false when it has errors.
-bool readWater(CaseBuilder& b, const YAML::Node& n, int line, HydroSpec& h) {
+bool readWater(CaseBuilder& b, const YAML::Node& n, int line, OceanSpec& h) {
   Fields f(b.diag, n, "water", {"density", "depth"});
   const auto density = requiredQuantity(b, f, "density", kind::kDensity, Limit::Positive);
   const auto depth = requiredQuantity(b, f, "depth", kind::kLength, Limit::Positive);
@@ -99,7 +100,7 @@ std::optional<hydro::WaveFront> readFront(CaseBuilder& b, const YAML::Node& n,
   return front;
 }
 
-void readComponents(CaseBuilder& b, const YAML::Node& n, const std::string& path, HydroSpec& h) {
+void readComponents(CaseBuilder& b, const YAML::Node& n, const std::string& path, OceanSpec& h) {
   const std::vector<YAML::Node> items = listItems(b.diag, n, path);
   for (size_t i = 0; i < items.size(); ++i)
     if (const auto wave = readComponent(b, items[i], itemPath(path, i), h.water))
@@ -109,7 +110,7 @@ void readComponents(CaseBuilder& b, const YAML::Node& n, const std::string& path
 // waves: a list of regular components, or a map of them {components, ...}, of a spectrum
 // {spectrum, ...} or of a record {measured, ...} (read_sea.cpp), each with
 // [kinematics_above_mean], [front], [ramp_up] and [kinematics_reuse].
-void readWaves(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
+void readWaves(CaseBuilder& b, const YAML::Node& n, OceanSpec& h) {
   if (!n.IsMap()) return readComponents(b, n, "waves", h);
   const bool spectral = static_cast<bool>(n["spectrum"]),
              measured = static_cast<bool>(n["measured"]);
@@ -222,7 +223,7 @@ std::optional<hydro::Bathymetry> readGrid(CaseBuilder& b, const YAML::Node& n,
 // (friction: a number, or a map naming its law: read_seabed_friction.hpp);
 // the defaults are MoorDyn's (seabed_contact.hpp), the bed flat at -depth unless a slope (through
 // z = -depth at x = y = 0) or a grid says otherwise.
-void readSeabed(CaseBuilder& b, const YAML::Node& n, HydroSpec& h) {
+void readSeabed(CaseBuilder& b, const YAML::Node& n, OceanSpec& h) {
   Fields f(b.diag, n, "seabed",
            {"stiffness", "damping", "friction", "slip_speed", "slope", "grid"});
   const hydro::SeabedProperties si;
@@ -286,7 +287,7 @@ bool hasPointMass(const CaseBuilder& b, int node) {
 
 // {node, type: sphere, diameter, Cd, [Ca: 0.5]} or {node, [type: point], volume,
 // [drag_area: 0], [Ca: 0]}, with [mass] or [weight].
-void readBody(CaseBuilder& b, const YAML::Node& item, const std::string& path, HydroSpec& h) {
+void readBody(CaseBuilder& b, const YAML::Node& item, const std::string& path, OceanSpec& h) {
   const std::string type = peekText(item, "type");
   const bool sphere = type == "sphere";
   Fields f(b.diag, item, path,
@@ -362,7 +363,7 @@ std::optional<LineHydroSpec> readLineHydro(CaseBuilder& b, const YAML::Node& n,
 }
 
 void readOcean(CaseBuilder& b, const Fields& top) {
-  HydroSpec& h = b.hydro;
+  OceanSpec& h = b.ocean;
   const YAML::Node* water = top.find("water");
   bool water_ok = false;
   if (water) {

@@ -7,6 +7,9 @@
 // the largest mean strain a taut line may need before it is taken as too short for its span.
 // The segments of a multi-segment line (`segment_of:`, read_mesh.cpp) start on one catenary, the
 // line's: each gives initial_shape (the first segment's friction and max_strain count) or none.
+#include <map>
+
+#include "apps/case/build/build_initial_shape.hpp"
 #include "apps/case/case_builder.hpp"
 
 namespace flexmoor::app {
@@ -14,10 +17,7 @@ namespace flexmoor::app {
 void readInitialShape(CaseBuilder& b, const YAML::Node& n, const std::string& path,
                       const std::vector<int>& nodes, const SectionSpec* section,
                       const std::string& segment_of) {
-  InitialShapeSpec spec;
-  spec.segment_of = segment_of;
-  spec.nodes = nodes;
-  spec.section = section;
+  CatenaryStartSpec spec;
   spec.line = lineOf(n);
   spec.where = path;
   const std::vector<std::pair<std::string, int>> types = {{"catenary", 0}};
@@ -30,7 +30,46 @@ void readInitialShape(CaseBuilder& b, const YAML::Node& n, const std::string& pa
     spec.friction = b.in.quantityOr(f, "friction", kind::kNumber, Limit::NonNegative, 0.0);
     spec.max_strain = b.in.quantityOr(f, "max_strain", kind::kNumber, Limit::Positive, 0.1);
   }
-  if (section) b.initial_shapes.push_back(std::move(spec));
+  if (!section) return;
+  spec.parts = {
+      {nodes, section->section, section->hydro ? section->hydro->coefficients.diameter : 0.0}};
+  b.initial_shapes.push_back({std::move(spec), segment_of});
+}
+
+std::vector<CatenaryStartSpec> catenaryStarts(CaseBuilder& b) {
+  std::vector<CatenaryStartSpec> starts;
+  std::vector<std::string> segment_of;  // of each start
+  std::map<std::string, size_t> of_name;
+  for (const PendingInitialShape& shape : b.initial_shapes) {
+    if (!shape.segment_of.empty())
+      if (const auto it = of_name.find(shape.segment_of); it != of_name.end()) {
+        starts[it->second].parts.push_back(shape.start.parts.front());
+        continue;
+      }
+    if (!shape.segment_of.empty()) of_name.emplace(shape.segment_of, starts.size());
+    starts.push_back(shape.start);
+    segment_of.push_back(shape.segment_of);
+  }
+  std::vector<CatenaryStartSpec> complete;
+  for (size_t i = 0; i < starts.size(); ++i) {
+    const std::string& name = segment_of[i];
+    const int segments = name.empty() ? 1 : b.line_segments.at(name);
+    const int given = static_cast<int>(starts[i].parts.size());
+    if (given == segments) {
+      complete.push_back(std::move(starts[i]));
+      continue;
+    }
+    b.diag.error(starts[i].line, starts[i].where + ": " + std::to_string(given) + " of the " +
+                                     std::to_string(segments) + " segments of " + name +
+                                     " give initial_shape (expected all or none: the segments "
+                                     "start on one catenary, the whole line's)");
+  }
+  return complete;
+}
+
+double submergedWeightPerLength(const CaseBuilder& b, const SectionSpec& section) {
+  return submergedWeightPerLength(b.ocean, b.conditions.gravityVector().norm(), section.section,
+                                  section.hydro ? section.hydro->coefficients.diameter : 0.0);
 }
 
 }  // namespace flexmoor::app

@@ -348,7 +348,7 @@ void readElement(CaseBuilder& b, const YAML::Node& item, const std::string& path
                       {"spring", 4},
                       {"point_mass", 5}});
   b.element_types.push_back(element ? type : "");
-  b.element_origin.push_back({lineOf(item), path, element ? peekText(item, "section") : ""});
+  b.origins.elements.push_back({lineOf(item), path, element ? peekText(item, "section") : ""});
   if (element) b.mesh.addElement(std::move(*element));
 }
 
@@ -365,7 +365,7 @@ int CaseBuilder::addGeneratedNode(const Eigen::Vector3d& position, int line) {
   const int node = mesh.addNode(position);
   node_of_id[id] = node;
   c.node_ids.push_back(id);
-  node_line.push_back(line);
+  origins.node_lines.push_back(line);
   return node;
 }
 
@@ -381,7 +381,7 @@ void readNodes(CaseBuilder& b, const YAML::Node& n) {
     for (size_t k = 0; k < order.size(); ++k) {
       b.node_of_id.emplace_hint(b.node_of_id.end(), t.ids[order[k]], first + k);
       b.c.node_ids.push_back(t.ids[order[k]]);
-      b.node_line.push_back(t.lines[order[k]]);
+      b.origins.node_lines.push_back(t.lines[order[k]]);
     }
     return;
   }
@@ -411,7 +411,7 @@ void readNodes(CaseBuilder& b, const YAML::Node& n) {
   for (const auto& [id, node] : nodes) {
     b.node_of_id[id] = first + k++;
     b.c.node_ids.push_back(id);
-    b.node_line.push_back(node.line);
+    b.origins.node_lines.push_back(node.line);
   }
 }
 
@@ -430,7 +430,7 @@ void readElements(CaseBuilder& b, const YAML::Node& n) {
     if (!p.name.empty()) b.line_elements[p.name].push_back(e);
     if (!p.segment_of.empty()) b.line_elements[p.segment_of].push_back(e);
     b.element_types.push_back("cable");
-    b.element_origin.push_back({p.line, p.where, p.section});
+    b.origins.elements.push_back({p.line, p.where, p.section});
   }
   collectNamedLines(b);
   for (PendingSurface& surface : b.surface_elements) {
@@ -438,7 +438,7 @@ void readElements(CaseBuilder& b, const YAML::Node& n) {
     for (PendingElement& e : surface.elements) {
       set.push_back(b.mesh.addElement(std::move(e.element)));
       b.element_types.push_back(e.type);
-      b.element_origin.push_back({surface.line, "surface '" + surface.name + "'", e.section});
+      b.origins.elements.push_back({surface.line, "surface '" + surface.name + "'", e.section});
     }
   }
 }

@@ -1,5 +1,5 @@
 // The irregular forms of `waves:` (read_sea.hpp): every value checked with its line, so that
-// build_hydro.cpp's synthesis and reconstruction cannot fail on a valid case.
+// build_ocean.cpp's synthesis and reconstruction cannot fail on a valid case.
 #include "apps/case/read/read_sea.hpp"
 
 #include <cmath>
@@ -243,7 +243,7 @@ const std::vector<std::string>& spectralSeaKeys() {
   return keys;
 }
 
-void readSpectralSea(CaseBuilder& b, Fields& f, HydroSpec& h) {
+void readSpectralSea(CaseBuilder& b, Fields& f, OceanSpec& h) {
   SpectralSeaSpec spec;
   spec.line = f.keyLine("spectrum");
   hydro::SynthesisOptions& o = spec.options;
@@ -321,7 +321,7 @@ void readSpectralSea(CaseBuilder& b, Fields& f, HydroSpec& h) {
   h.spectral = spec;
 }
 
-void readMeasuredSea(CaseBuilder& b, const YAML::Node& n, const std::string& path, HydroSpec& h) {
+void readMeasuredSea(CaseBuilder& b, const YAML::Node& n, const std::string& path, OceanSpec& h) {
   Fields f(b.diag, n, path, {"table", "file", "heading", "at", "cutoff"});
   const YAML::Node* table = f.find("table");
   const YAML::Node* file = f.find("file");

@@ -365,14 +365,14 @@ bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path
                           nameList(b.line_elements) + ")");
     return false;
   }
-  if (!b.hydro.has_contact) {
+  if (!b.ocean.has_contact) {
     b.diag.error(n, path + ": no seabed contact in this case (got length_on_seabed, expected " +
                         "seabed: with water:)");
     return false;
   }
   s.elements = line->second;
   for (int e : line->second) {
-    const auto it = b.sections.find(b.element_origin[e].section);
+    const auto it = b.sections.find(b.origins.elements[e].section);
     if (it == b.sections.end() || !it->second) return false;  // broken: reported where defined
     const double w = submergedWeightPerLength(b, *it->second);
     if (!(w > 0.0)) {
@@ -393,9 +393,9 @@ bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path
   const int lower = height(nodes.front()) <= height(nodes.back()) ? nodes.front() : nodes.back();
   // A raised anchor holds the part hanging from it, not the laid part's end: its reaction is not
   // the bed's.
-  const double bed = b.hydro.bed.height(X(0, lower) + held.prescribed(lower, 0),
+  const double bed = b.ocean.bed.height(X(0, lower) + held.prescribed(lower, 0),
                                         X(1, lower) + held.prescribed(lower, 1));
-  const bool at_bed = height(lower) <= bed + positionTolerance(b);
+  const bool at_bed = height(lower) <= bed + b.mesh.positionTolerance();
   s.node = held.held(lower, 2) && at_bed ? lower : -1;
   // The weight of the element at the anchor, for the anchor's share of the laid weight.
   s.weight_per_length = s.element_weights.front();

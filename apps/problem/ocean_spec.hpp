@@ -1,8 +1,12 @@
 #pragma once
-// The ocean sections of a case file as read (read_hydro.cpp), in the case's unit system:
-// `water:`, `waves:`, `current:`, `seabed:`, `bodies:`, a section's `hydro:` and
-// `loads: wave_pressure:`. build_hydro.cpp
-// turns them into a hydro::Sea and the loads that put it on the model.
+// A case's ocean as specifications, in the case's unit system: the water, its waves and current,
+// the seabed and its contact, the bodies at nodes, Morison loads on cable elements and the
+// incident wave pressure on membranes. The case reader fills it from `water:`, `waves:`,
+// `current:`, `seabed:`, `bodies:`, the sections' `hydro:` and `loads: wave_pressure:`; a program
+// fills it to state a mooring case without a case file (case_spec.hpp). buildOcean
+// (apps/case/build/build_ocean.hpp) turns it into a hydro::Sea and the loads that put it on the
+// model. Nodes and elements are 0-based model nodes and elements; a `line` is the case file's
+// line that states the item, 0 for none.
 #include <limits>
 #include <optional>
 #include <string>
@@ -30,6 +34,13 @@ struct LineHydroSpec {
   hydro::MorisonCoefficients coefficients;
   model::LengthMeasure per_length = model::LengthMeasure::Current;
   int line = 0;  // of the `hydro:` key
+};
+
+// Morison loads on these cable elements (libhydro/loads/morison_line_load.hpp), with their
+// section's coefficients. The elements' diameter is also their width on the seabed.
+struct MorisonSpec {
+  std::vector<int> elements;
+  LineHydroSpec hydro;
 };
 
 // One regular wave component of `waves:` (angles in rad).
@@ -71,7 +82,7 @@ struct WavePressureSpec {
   std::string where;  // "loads.wave_pressure[0]"
 };
 
-struct HydroSpec {
+struct OceanSpec {
   bool has_water = false;  // `water:` given: nothing else of the ocean applies without it
   int water_line = 0;
   hydro::Water water;
@@ -85,13 +96,23 @@ struct HydroSpec {
   hydro::SurfaceKinematics surface = hydro::SurfaceKinematics::Wheeler;
   std::optional<hydro::WaveFront> front;
   std::optional<hydro::CurrentProfile> current;
-  // The bed lies at -depth unless `seabed:` gives a slope or a grid; contact acts only with
-  // `seabed:` (has_contact).
+  // The bed lies at -depth (Bathymetry::flat(depth), as inWater sets it) unless `seabed:` gives
+  // a slope or a grid; contact acts only with `seabed:` (has_contact).
   hydro::Bathymetry bed = hydro::Bathymetry::flat(0.0);
   bool has_contact = false;
   hydro::SeabedProperties contact;
   std::vector<BodySpec> bodies;
   std::vector<WavePressureSpec> wave_pressures;  // read with loads: (read_conditions.cpp)
+  std::vector<MorisonSpec> morison;              // an element in one of them at most
+
+  // Still water with its bed flat at -depth: the start of an ocean stated in code.
+  static OceanSpec inWater(const hydro::Water& water) {
+    OceanSpec spec;
+    spec.has_water = true;
+    spec.water = water;
+    spec.bed = hydro::Bathymetry::flat(water.depth);
+    return spec;
+  }
 };
 
 }  // namespace flexmoor::app

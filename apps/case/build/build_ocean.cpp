@@ -1,11 +1,10 @@
-// The sea of a case's ocean sections (hydro_spec.hpp) and its loads on the model: Morison loads on
-// the cable elements of sections with hydro: (one load per length measure in use), the bodies'
-// loads at their nodes, the incident wave pressure on membranes, and seabed contact over the
-// lines' hydrodynamic diameters and the bodies' projected areas.
+#include "apps/case/build/build_ocean.hpp"
+
 #include <cmath>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
-#include "apps/case/case_builder.hpp"
 #include "libhydro/loads/body_node_load.hpp"
 #include "libhydro/loads/morison_line_load.hpp"
 #include "libhydro/loads/wave_pressure_load.hpp"
@@ -28,7 +27,7 @@ const char* discretisationName(hydro::Discretisation d) {
 }
 
 // The sea's components (regular, from a spectrum or from a record) and how they were made.
-std::shared_ptr<const hydro::Sea> makeSea(const HydroSpec& h, SeaOrigin& origin) {
+std::shared_ptr<const hydro::Sea> makeSea(const OceanSpec& h, SeaOrigin& origin) {
   auto sea = std::make_shared<hydro::Sea>(h.water);
   const double depth = h.water.depth, g = h.water.gravity;
   std::vector<hydro::WaveComponent> components;
@@ -66,20 +65,24 @@ std::shared_ptr<const hydro::Sea> makeSea(const HydroSpec& h, SeaOrigin& origin)
   return sea;
 }
 
-// The hydro: of each model element's section: cable elements only (a hoop ring has none).
-std::vector<const LineHydroSpec*> elementHydro(const CaseBuilder& b) {
-  std::vector<const LineHydroSpec*> hydro(b.model.elementCount(), nullptr);
-  for (int e = 0; e < b.model.elementCount(); ++e) {
-    const auto s = b.sections.find(b.element_origin[e].section);
-    if (b.element_types[e] == "cable" && s != b.sections.end() && s->second && s->second->hydro)
-      hydro[e] = &*s->second->hydro;
-  }
+// The Morison coefficients of each model element, null for none.
+std::vector<const LineHydroSpec*> elementHydro(const OceanSpec& h, const model::Model& m) {
+  std::vector<const LineHydroSpec*> hydro(m.elementCount(), nullptr);
+  for (const MorisonSpec& morison : h.morison)
+    for (const int e : morison.elements) {
+      if (e < 0 || e >= m.elementCount())
+        throw std::invalid_argument("Morison loads on element " + std::to_string(e) +
+                                    ", which is not in the mesh (" +
+                                    std::to_string(m.elementCount()) + " elements, 0-based)");
+      hydro[e] = &morison.hydro;
+    }
   return hydro;
 }
 
-void addMorisonLoads(CaseBuilder& b, const std::shared_ptr<const hydro::Sea>& sea,
+void addMorisonLoads(const OceanSpec& h, model::Model& m,
+                     const std::shared_ptr<const hydro::Sea>& sea,
                      const std::vector<const LineHydroSpec*>& hydro) {
-  const std::optional<double>& reuse = b.hydro.kinematics_reuse;
+  const std::optional<double>& reuse = h.kinematics_reuse;
   const auto held = reuse ? std::make_shared<const hydro::HeldKinematics>(sea, *reuse) : nullptr;
   for (const model::LengthMeasure measure :
        {model::LengthMeasure::Current, model::LengthMeasure::Reference}) {
@@ -93,26 +96,26 @@ void addMorisonLoads(CaseBuilder& b, const std::shared_ptr<const hydro::Sea>& se
     if (!any) continue;
     auto load = std::make_shared<hydro::MorisonLineLoad>(sea, std::move(sections), measure);
     if (held) load->holdKinematics(held);
-    b.model.addLineLoad(load);
+    m.addLineLoad(load);
   }
 }
 
 }  // namespace
 
-void buildOcean(CaseBuilder& b) {
-  const HydroSpec& h = b.hydro;
+void buildOcean(const OceanSpec& h, Case& c) {
   if (!h.has_water) return;
+  model::Model& m = *c.model;
+  const std::vector<const LineHydroSpec*> hydro = elementHydro(h, m);
   SeaOrigin origin;
   const std::shared_ptr<const hydro::Sea> sea = makeSea(h, origin);
-  b.c.sea = sea;
-  b.c.sea_origin = origin;
-  b.c.seabed = std::make_shared<const hydro::Bathymetry>(h.bed);
-  const std::vector<const LineHydroSpec*> hydro = elementHydro(b);
-  addMorisonLoads(b, sea, hydro);
+  c.sea = sea;
+  c.sea_origin = origin;
+  c.seabed = std::make_shared<const hydro::Bathymetry>(h.bed);
+  addMorisonLoads(h, m, sea, hydro);
   for (const BodySpec& body : h.bodies)
-    b.model.addNodeLoad(std::make_shared<hydro::BodyNodeLoad>(body.node, body.body, sea));
+    m.addNodeLoad(std::make_shared<hydro::BodyNodeLoad>(body.node, body.body, sea));
   for (const WavePressureSpec& w : h.wave_pressures)
-    b.model.addSurfaceLoad(std::make_shared<hydro::IncidentPressureLoad>(sea, w.side), w.elements);
+    m.addSurfaceLoad(std::make_shared<hydro::IncidentPressureLoad>(sea, w.side), w.elements);
   if (!h.has_contact) return;
   // Each line element's width and node spacing (MoorDyn's segment length, over which the moordyn
   // friction law spreads a node's friction damping).
@@ -120,15 +123,15 @@ void buildOcean(CaseBuilder& b) {
   for (size_t e = 0; e < hydro.size(); ++e) {
     if (!hydro[e]) continue;
     widths[e] = hydro[e]->coefficients.diameter;
-    const std::vector<int>& nodes = b.model.element(static_cast<int>(e)).nodes();
+    const std::vector<int>& nodes = m.element(static_cast<int>(e)).nodes();
     double length = 0.0;
     for (size_t i = 1; i < nodes.size(); ++i)
-      length += (b.model.reference().col(nodes[i]) - b.model.reference().col(nodes[i - 1])).norm();
+      length += (m.reference().col(nodes[i]) - m.reference().col(nodes[i - 1])).norm();
     node_lengths[e] = length / static_cast<double>(nodes.size() - 1);
   }
-  b.c.seabed_contact = b.model.lineLoads().size();
-  b.model.addLineLoad(std::make_shared<hydro::SeabedLineLoad>(h.bed, h.contact, std::move(widths),
-                                                              std::move(node_lengths)));
+  c.seabed_contact = m.lineLoads().size();
+  m.addLineLoad(std::make_shared<hydro::SeabedLineLoad>(h.bed, h.contact, std::move(widths),
+                                                        std::move(node_lengths)));
   // Bodies touch the bed with their projected area from their lowest point: a sphere's disc
   // pi D^2 / 4 from its radius below the node; a point body as a cube of its volume, V^(2/3)
   // from half its side (a body without volume does not touch).
@@ -138,7 +141,7 @@ void buildOcean(CaseBuilder& b) {
     const double area = p.diameter > 0.0 ? M_PI * p.diameter * p.diameter / 4.0 : side * side;
     const double offset = p.diameter > 0.0 ? 0.5 * p.diameter : 0.5 * side;
     if (area > 0.0)
-      b.model.addNodeLoad(
+      m.addNodeLoad(
           std::make_shared<hydro::SeabedNodeLoad>(body.node, h.bed, h.contact, area, offset));
   }
 }
