@@ -3,10 +3,11 @@
 // each: read_materials.cpp, read_mesh.cpp, read_surfaces.cpp, node_refs.cpp, read_histories.cpp,
 // read_conditions.cpp, read_enclosed_fluid.cpp, read_hydro.cpp, read_steps.cpp, read_summary.cpp,
 // read_output.cpp, read_figure.cpp) and by what builds and checks the model after them (build/,
-// check/): the Case they fill (apps/problem/case.hpp), the specifications of its mesh and
-// conditions that the model is built from once the file is read (apps/problem/mesh_spec.hpp,
-// conditions_spec.hpp), and what is read before its place in them is known (the lines' cables,
-// the surfaces' elements, the bodies' masses).
+// check/): the Case they fill (apps/problem/case.hpp), the specifications the model is built from
+// once the file is read (apps/problem/: mesh_spec.hpp, conditions_spec.hpp, ocean_spec.hpp, the
+// lines' catenary starts, the enclosed liquids), where each node and element comes from, and what
+// is read before its place in them is known (the lines' cables, the surfaces' elements, the
+// bodies' masses). The readers know nothing of the model.
 // A name defined with errors is remembered as broken, so that what refers to it is not reported
 // again.
 #include <functional>
@@ -101,12 +102,11 @@ struct PendingEnclosedFluid {
 
 struct CaseBuilder {
   CaseBuilder(Diagnostics& diag, UnitSystem units, Case& result)
-      : in(diag, units), diag(diag), c(result), model(*result.model) {}
+      : in(diag, units), diag(diag), c(result) {}
 
   Input in;
   Diagnostics& diag;
   Case& c;
-  model::Model& model;
 
   std::optional<NodeTable> node_table;  // nodes: when read by the fast path (node_table.hpp)
   std::map<int, int> node_of_id;        // file id -> model node
@@ -138,6 +138,7 @@ struct CaseBuilder {
   OceanSpec ocean;                            // the ocean sections (read_hydro.cpp)
   std::vector<PendingPointMass> body_masses;  // of the bodies that give one (read_hydro.cpp)
   std::vector<PendingInitialShape> initial_shapes;    // of the lines that give one
+  std::vector<CatenaryStartSpec> catenary_starts;     // of a scenario's lines
   std::vector<PendingEnclosedFluid> enclosed_fluids;  // read with loads: (read_enclosed_fluid.cpp)
 
   std::set<std::pair<int, int>> released;  // (node, component) freed by a step's release:
@@ -205,16 +206,29 @@ void readFigure(CaseBuilder& b, const YAML::Node& n);  // read_figure.cpp
 void readInitialShape(CaseBuilder& b, const YAML::Node& n, const std::string& path,
                       const std::vector<int>& nodes, const SectionSpec* section,
                       const std::string& segment_of);
-// The catenary starts of the lines with an initial_shape:, the segments of a multi-segment line
-// joined into one start, the line's; a line whose segments do not all give it is an error
-// (read_initial_shape.cpp).
+// The catenary starts of a scenario's lines, then of the lines with an initial_shape:, the
+// segments of a multi-segment line joined into one start, the line's; a line whose segments do
+// not all give it is an error (read_initial_shape.cpp).
 std::vector<CatenaryStartSpec> catenaryStarts(CaseBuilder& b);
 // The weight per unstretched length of a line of this section in the case's gravity, less its
 // buoyancy where the section has hydro: in water (build_initial_shape.hpp).
 double submergedWeightPerLength(const CaseBuilder& b, const SectionSpec& section);
-// A section's `hydro:` (read_hydro.cpp).
+// A section's `hydro:` (read_hydro.cpp), or its keys (diameter, Cn, Ct, Ca, CaAx,
+// tangential_drag_area, per_length) among the keys of `f`.
 std::optional<LineHydroSpec> readLineHydro(CaseBuilder& b, const YAML::Node& n,
                                            const std::string& path);
+std::optional<LineHydroSpec> readLineHydro(CaseBuilder& b, Fields& f);
+// A cable section's `damping:` (BA or zeta) into `section` (read_materials.cpp).
+bool readLineDamping(CaseBuilder& b, const YAML::Node& n, const std::string& path,
+                     element::CableSection& section);
+// The six motions of a rigid body (surge, sway, heave, roll, pitch, yaw, each optional) and its
+// `ramp:` among the keys of `f`, each ramped in (read_histories.cpp); nullopt after reporting an
+// error.
+std::optional<model::RigidBodyMotion::Dofs> readRigidMotions(CaseBuilder& b, Fields& f);
+// A step of `kind` from the keys of `map` (null: none) over `step`'s values, named `name` unless
+// it gives name: (read_steps.cpp): a scenario's own step keys.
+void readStepOf(CaseBuilder& b, StepSpec step, const YAML::Node* map, const std::string& path,
+                const std::string& name);
 
 // `history: NAME` of a load or a support: the named time function (read_histories.cpp); reports
 // an unknown name, returns nullptr for it and for a broken one.

@@ -109,10 +109,11 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   Diagnostics diag(path);
   const YAML::Node root = expandScenario(diag, document.root);
   diag.throwIfAny();  // a scenario that could not be expanded: its own messages say why
+  const bool spread = isSpreadMooring(root);
   Case c;
   c.file = path;
   c.model = std::make_unique<model::Model>();
-  Fields top(diag, root, "", kTopKeys);
+  Fields top(diag, root, "", spread ? spreadMooringKeys() : kTopKeys);
   if (const YAML::Node* u = top.require("units"))
     c.units = Input(diag, UnitSystem::SI)
                   .choice(*u, "units",
@@ -123,6 +124,11 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   b.node_table = document.node_table;
   c.name = readName(diag, b.in, top, path);
   if (const YAML::Node* t = top.find("title")) c.title = b.in.text(*t, "title").value_or("");
+  std::optional<ScenarioModel> scenario;
+  if (spread) {
+    scenario = readSpreadMooring(b, top);
+    diag.throwIfAny();  // a scenario that cannot stand for a model: its own messages say why
+  }
 
   // In dependency order; an absent section is an empty one.
   const auto section = [&top](const char* key) {
@@ -135,18 +141,24 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   readLines(b, section("lines"));
   readSurfaces(b, section("surfaces"));
   readElements(b, section("elements"));
+  if (scenario) addScenarioModel(b, *scenario);
   readNodeSets(b, section("node_sets"));
   readHistories(b, section("histories"));
   readSupports(b, section("supports"));
   readLoads(b, section("loads"));
   readOcean(b, top);
+  if (scenario) addScenarioOcean(b, *scenario, top.find("seabed") != nullptr);
   addBodyMasses(b);
   if (b.ocean.has_water) addMorison(b);
   resolveEnclosedFluids(b);
-  if (const YAML::Node* steps = top.require("steps")) readSteps(b, *steps);
+  if (scenario)
+    readScenarioSteps(b, top);
+  else if (const YAML::Node* steps = top.require("steps"))
+    readSteps(b, *steps);
   readSummary(b, section("summary"));
   readOutput(b, section("output"));
   readFigure(b, section("figure"));
+  if (scenario) addScenarioDefaults(b, top, *scenario);
   if (series) readForeignSeries(b, *series);
 
   buildMesh(b.mesh, *c.model);

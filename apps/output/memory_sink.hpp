@@ -1,6 +1,6 @@
 #pragma once
-// A result sink that keeps every record in memory (states copied): for tests, studies and the
-// bindings to come, which read a run's series without a file.
+// A result sink that keeps every record in memory (states copied), for a caller that reads a
+// run's records without a file.
 #include <deque>
 #include <vector>
 

@@ -38,6 +38,8 @@ struct CaseSpec {
   // By name: the rigid bodies whose motion the supports' histories follow (model::RigidPointMotion), so
   // that a host program may drive them (RigidBodyMotion::drive, the C API's coupled bodies).
   std::map<std::string, std::shared_ptr<model::RigidBodyMotion>> rigid_motions;
+  // The histories of supports and loads by name, for the messages that speak of them.
+  std::map<std::string, std::shared_ptr<const model::TimeFunction>> histories;
   std::vector<StepSpec> steps;  // in the order they run
   std::vector<SummarySpec> summary;
   OutputFields output = OutputFields::all();

@@ -15,6 +15,7 @@
 
 #include "apps/case/build/build_case.hpp"
 #include "apps/case/case_reader.hpp"
+#include "apps/case/scenarios/spread_mooring.hpp"
 #include "apps/output/memory_sink.hpp"
 #include "apps/run/simulation.hpp"
 #include "libstruct/material/cable_material.hpp"
@@ -201,6 +202,68 @@ TEST(CaseSpecMooringTwin, Oc4InCodeIsItsCaseFileToTheBit) {
     EXPECT_EQ(summary_file.at(name), value) << name;
   }
   EXPECT_EQ(summary.size(), 6u);
+}
+
+// The same case through the scenario's function: OC4's chain as a line type of its diameter,
+// mass per length and EA, the three lines from their anchors to their fairlead points, the
+// platform's surge; the case file's steps.
+app::CaseSpec oc4ThroughTheScenario() {
+  app::LineHydroSpec hydro;
+  hydro.coefficients = {0.0, 2.0,  0.4,
+                        0.8, 0.25, hydro::MorisonCoefficients::TangentialDragArea::Perimeter};
+  hydro.per_length = model::LengthMeasure::Reference;
+  app::LineType chain = app::LineType::of(0.0766, 113.35, 7.536e8, hydro);
+  chain.section.axial_damping = 3.052e6;
+  app::SpreadMooringSpec spec;
+  spec.water = {1025.0, 200.0, 9.80665};
+  spec.line_types["chain"] = chain;
+  const Eigen::Vector3d anchors[3] = {
+      {418.8, 725.383, -200.0}, {-837.6, 0.0, -200.0}, {418.8, -725.383, -200.0}};
+  const Eigen::Vector3d fairleads[3] = {
+      {20.434, 35.393, -14.0}, {-40.868, 0.0, -14.0}, {20.434, -35.393, -14.0}};
+  for (int k = 0; k < 3; ++k) {
+    app::MooringLine line;
+    line.anchor = anchors[k];
+    line.fairlead = fairleads[k];
+    line.segments = {{"chain", 835.35, 12, 3}};
+    spec.lines.push_back(line);
+  }
+  model::RigidBodyMotion::Dofs surge;
+  surge[0] = std::make_shared<model::RampedFunction>(
+      std::make_shared<model::SineFunction>(0.0, 2.0, 10.0, 0.0), 0.0, 10.0);
+  spec.platform =
+      app::PlatformSpec{Eigen::Vector3d::Zero(), std::make_shared<model::RigidBodyMotion>(surge)};
+  return app::spreadMooring(spec, oc4InCode().steps);
+}
+
+TEST(CaseSpecMooringTwin, TheScenarioInCodeIsItsCaseFileToTheBit) {
+  const app::Case file = app::readCase(oc4CaseFile());
+  const app::Case code = app::buildCase(oc4ThroughTheScenario());
+  ASSERT_EQ(file.model->reference(), code.model->reference());
+  EXPECT_EQ(file.lines, code.lines);
+  EXPECT_EQ(file.model->startState().displacement, code.model->startState().displacement);
+  Recorded from_file, from_code;
+  run(file, from_file);
+  run(code, from_code);
+  ASSERT_EQ(from_code.result.exit_code, app::kSuccess);
+  const std::vector<app::ResultFrame>&a = from_file.records.frames(),
+        &b = from_code.records.frames();
+  ASSERT_EQ(b.size(), kSurgeSteps + 2u);
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].state->displacement, b[i].state->displacement) << "record " << i;
+    ASSERT_EQ(a[i].reactions, b[i].reactions) << "record " << i;
+  }
+  // The scenario's default summary: line 2's fairlead tension over the surge, as the file's own
+  // tension_max_2 over t >= 10 s is at most.
+  std::map<std::string, double> summary(from_code.result.summary.begin(),
+                                        from_code.result.summary.end());
+  std::map<std::string, double> own(from_file.result.summary.begin(),
+                                    from_file.result.summary.end());
+  ASSERT_EQ(summary.count("fairlead_tension_max_2"), 1u);
+  EXPECT_GE(summary.at("fairlead_tension_max_2"), own.at("tension_max_2"));
+  EXPECT_EQ(summary.count("length_on_seabed_static_3"), 1u);
+  EXPECT_EQ(from_code.result.summary.size(), 3u * (7u + 4u) + 0u);
 }
 
 void expectRefused(const app::CaseSpec& spec, const std::string& part) {

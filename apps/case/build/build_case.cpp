@@ -103,7 +103,7 @@ Case buildCase(const CaseSpec& spec) {
   // The case file's checks of the built model.
   ModelOrigins origins = ModelOrigins::sourceless(spec.mesh.nodeCount(), spec.mesh.elementCount());
   origins.elements.resize(c.model->elementCount(), {0, "an enclosed liquid's lumped mass", ""});
-  checkModel({c, spec.mesh, spec.ocean, origins, {}, {}, diag});
+  checkModel({c, spec.mesh, spec.ocean, origins, {}, spec.histories, diag});
   for (const SpecError& e : diag.empty() ? startOnCatenaries(spec.catenary_starts, spec.ocean, c)
                                          : std::vector<SpecError>())
     diag.error(e.line, e.message);

@@ -62,8 +62,10 @@ std::shared_ptr<const model::TimeFunction> readTable(CaseBuilder& b, Fields& f) 
 
 const char* const kRigidMotions[] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
 
-// The six motions of a rigid body (each optional) and its `ramp:`, of a rigid_motion or of a
-// rigid_point that gives its body's motion itself; nullopt after reporting an error.
+}  // namespace
+
+// Of a rigid_motion, of a rigid_point that gives its body's motion itself, or of a scenario's
+// platform.
 std::optional<model::RigidBodyMotion::Dofs> readRigidMotions(CaseBuilder& b, Fields& f) {
   model::RigidBodyMotion::Dofs motions;
   bool ok = true;
@@ -93,6 +95,8 @@ std::optional<model::RigidBodyMotion::Dofs> readRigidMotions(CaseBuilder& b, Fie
   }
   return motions;
 }
+
+namespace {
 
 bool givesMotions(Fields& f) {
   for (const char* key : kRigidMotions)

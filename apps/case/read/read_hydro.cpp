@@ -338,8 +338,12 @@ std::optional<LineHydroSpec> readLineHydro(CaseBuilder& b, const YAML::Node& n,
                                            const std::string& path) {
   Fields f(b.diag, n, path,
            {"diameter", "Cn", "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length"});
+  return readLineHydro(b, f);
+}
+
+std::optional<LineHydroSpec> readLineHydro(CaseBuilder& b, Fields& f) {
   LineHydroSpec s;
-  s.line = lineOf(n);
+  s.line = lineOf(f.node());
   hydro::MorisonCoefficients& c = s.coefficients;
   const auto d = requiredQuantity(b, f, "diameter", kind::kLength, Limit::Positive);
   const auto cn = requiredQuantity(b, f, "Cn", kind::kNumber, Limit::NonNegative);

@@ -50,7 +50,7 @@ std::vector<CatenaryStartSpec> catenaryStarts(CaseBuilder& b) {
     starts.push_back(shape.start);
     segment_of.push_back(shape.segment_of);
   }
-  std::vector<CatenaryStartSpec> complete;
+  std::vector<CatenaryStartSpec> complete = b.catenary_starts;
   for (size_t i = 0; i < starts.size(); ++i) {
     const std::string& name = segment_of[i];
     const int segments = name.empty() ? 1 : b.line_segments.at(name);

@@ -92,6 +92,8 @@ MaterialLaws readMaterial(CaseBuilder& b, const MapEntry& e) {
           std::make_shared<material::MooneyRivlinMembrane>(*C1, *C2)};  // Eq. 2.42
 }
 
+}  // namespace
+
 // A cable section's `damping:`, axial Kelvin-Voigt damping (axial_damping.hpp): `BA:` in N*s, or
 // `zeta:`, MoorDyn's negative BA input, turned into BA per element by the element from its length.
 bool readLineDamping(CaseBuilder& b, const YAML::Node& n, const std::string& path,
@@ -123,6 +125,8 @@ bool readLineDamping(CaseBuilder& b, const YAML::Node& n, const std::string& pat
   (ba ? section.axial_damping : section.damping_ratio) = *v;
   return true;
 }
+
+namespace {
 
 // A cable section (`area:`) or a membrane section (`thickness:`, its material needing a membrane
 // law).

@@ -309,6 +309,29 @@ const std::vector<std::pair<std::string, StepSpec::Kind>>& stepKinds() {
   return kinds;
 }
 
+// The keys of `map` over `step`'s values; its name `name` unless it gives one.
+void readStepKeys(CaseBuilder& b, StepSpec step, const YAML::Node& map, const std::string& path,
+                  const std::string& name) {
+  Fields f(b.diag, map, path, keysOf(step.kind));
+  switch (step.kind) {
+    case StepSpec::Kind::Relax:
+      readRelax(b, f, step.relax);
+      break;
+    case StepSpec::Kind::Static:
+      readStatic(b, f, step.statics);
+      break;
+    case StepSpec::Kind::Modes:
+      readModes(b, f, step.modes);
+      break;
+    case StepSpec::Kind::Dynamic:
+      readDynamic(b, f, step);
+      break;
+  }
+  readRelease(b, f, step);
+  step.name = stepName(b, f, name.c_str());
+  b.c.steps.push_back(std::move(step));
+}
+
 void readStep(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   const std::vector<MapEntry> entries =
       item.IsMap() ? mapEntries(b.diag, item, path) : std::vector<MapEntry>{};
@@ -331,27 +354,17 @@ void readStep(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   step.kind = found->second;
   // A step a scenario wrote has no place of its own: the map it was made from has one.
   step.where = {b.diag.file(), lineOf(e.key_node) > 0 ? lineOf(e.key_node) : lineOf(e.value)};
-  Fields f(b.diag, e.value, childPath(path, e.key), keysOf(step.kind));
-  switch (step.kind) {
-    case StepSpec::Kind::Relax:
-      readRelax(b, f, step.relax);
-      break;
-    case StepSpec::Kind::Static:
-      readStatic(b, f, step.statics);
-      break;
-    case StepSpec::Kind::Modes:
-      readModes(b, f, step.modes);
-      break;
-    case StepSpec::Kind::Dynamic:
-      readDynamic(b, f, step);
-      break;
-  }
-  readRelease(b, f, step);
-  step.name = stepName(b, f, found->first.c_str());
-  b.c.steps.push_back(std::move(step));
+  readStepKeys(b, std::move(step), e.value, childPath(path, e.key), found->first);
 }
 
 }  // namespace
+
+void readStepOf(CaseBuilder& b, StepSpec step, const YAML::Node* map, const std::string& path,
+                const std::string& name) {
+  const YAML::Node keys = map ? *map : YAML::Node(YAML::NodeType::Map);
+  step.where = {b.diag.file(), map ? lineOf(*map) : 0};
+  readStepKeys(b, std::move(step), keys, path, name);
+}
 
 void readSteps(CaseBuilder& b, const YAML::Node& n) {
   const std::vector<YAML::Node> items = listItems(b.diag, n, "steps");

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <charconv>
 
+#include "apps/case/build/line_summary.hpp"
 #include "apps/case/case_builder.hpp"
 #include "apps/common/format_number.hpp"
 
@@ -370,40 +371,19 @@ bool readSeabedLine(CaseBuilder& b, const YAML::Node& n, const std::string& path
                         "seabed: with water:)");
     return false;
   }
-  s.elements = line->second;
-  for (int e : line->second) {
+  for (int e : line->second) {  // a broken section: reported where it is defined
     const auto it = b.sections.find(b.origins.elements[e].section);
-    if (it == b.sections.end() || !it->second) return false;  // broken: reported where defined
-    const double w = submergedWeightPerLength(b, *it->second);
-    if (!(w > 0.0)) {
-      b.diag.error(n, path + ": the line does not sink (got a submerged weight of " +
-                          formatNumber(w) + " per length in section " + it->first +
-                          ", expected > 0: length_on_seabed is the length whose weight the bed "
-                          "carries)");
-      return false;
-    }
-    s.element_weights.push_back(w);
+    if (it != b.sections.end() && !it->second) return false;
   }
-  const std::vector<int>& nodes = b.c.lines.at(*name);
-  const model::NodalField& X = b.mesh.reference;
-  const ConditionsSpec& held = b.conditions;
-  const auto height = [&](int node) {  // where its supports put it, at load factor 1
-    return X(2, node) + held.prescribed(node, 2);
-  };
-  const int lower = height(nodes.front()) <= height(nodes.back()) ? nodes.front() : nodes.back();
-  // A raised anchor holds the part hanging from it, not the laid part's end: its reaction is not
-  // the bed's.
-  const double bed = b.ocean.bed.height(X(0, lower) + held.prescribed(lower, 0),
-                                        X(1, lower) + held.prescribed(lower, 1));
-  const bool at_bed = height(lower) <= bed + b.mesh.positionTolerance();
-  s.node = held.held(lower, 2) && at_bed ? lower : -1;
-  // The weight of the element at the anchor, for the anchor's share of the laid weight.
-  s.weight_per_length = s.element_weights.front();
-  for (size_t i = 0; i < s.elements.size(); ++i) {
-    const std::vector<int>& ends = b.mesh.elementNodes(s.elements[i]);
-    if (ends.front() == lower || ends.back() == lower) s.weight_per_length = s.element_weights[i];
-  }
-  return true;
+  const CaseLine whole{*name, b.c.lines.at(*name), line->second, "", CaseLine::Anchor::None};
+  const int sinks_not = seabedLine(whole, b.mesh, b.conditions, b.ocean, s);
+  if (sinks_not < 0) return true;
+  b.diag.error(n, path + ": the line does not sink (got a submerged weight of " +
+                      formatNumber(s.element_weights.back()) + " per length in section " +
+                      b.origins.elements[line->second[sinks_not]].section +
+                      ", expected > 0: length_on_seabed is the length whose weight the bed "
+                      "carries)");
+  return false;
 }
 
 // One quantity of summary: (form Summary), or the series of one (form Series: no at: or stat:,

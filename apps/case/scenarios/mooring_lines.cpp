@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "apps/case/case_builder.hpp"
 #include "apps/case/input/units.hpp"
 #include "apps/common/format_number.hpp"
 #include "libhydro/mooring/catenary_line.hpp"
@@ -81,18 +82,14 @@ std::optional<MooringAttachment> readAttachment(Input& in, const YAML::Node& ite
                             "whose Morison loads it scales)");
       return std::nullopt;
     }
-  if (const YAML::Node* n = f.find("drag_area")) {
-    if (!in.quantity(*n, f.path("drag_area"), kind::kArea, Limit::NonNegative)) return std::nullopt;
-    a.drag_area.emplace(*n);
-  }
-  if (const YAML::Node* n = f.find("Ca")) {
-    if (!in.quantity(*n, f.path("Ca"), kind::kNumber, Limit::NonNegative)) return std::nullopt;
-    a.added_mass.emplace(*n);
-  }
+  const auto drag_area = in.quantityOr(f, "drag_area", kind::kArea, Limit::NonNegative, 0.0);
+  const auto added_mass = in.quantityOr(f, "Ca", kind::kNumber, Limit::NonNegative, 0.0);
   if (!point || !mass || !volume) return std::nullopt;
   a.at = *point;
   a.mass = *mass;
   a.volume = *volume;
+  a.drag_area = drag_area;
+  a.added_mass = added_mass;
   return a;
 }
 
@@ -104,7 +101,8 @@ double MooringLine::length() const {
   return l;
 }
 
-std::optional<LineType> readLineType(Input& in, const MapEntry& e, double rho, double g) {
+std::optional<LineType> readLineType(CaseBuilder& b, const MapEntry& e, double rho, double g) {
+  Input& in = b.in;
   Diagnostics& diag = in.diag;
   Fields f(diag, e.value, childPath("line_types", e.key),
            {"diameter", "mass_per_length", "EA", "weight_in_water", "compression", "strain", "Cn",
@@ -117,10 +115,10 @@ std::optional<LineType> readLineType(Input& in, const MapEntry& e, double rho, d
   const auto m = need("mass_per_length", kMassPerLength);
   const auto ea = need("EA", kind::kForce);
   if (!d || !m || !ea) return std::nullopt;
-  LineType t{kPi * *d * *d / 4.0, *m, *ea, *d, e.value};
+  const double area = kPi * *d * *d / 4.0;
   if (const YAML::Node* n = f.find("weight_in_water")) {
     const auto w = in.quantity(*n, f.path("weight_in_water"), kWeightPerLength);
-    const double expected = (t.mass_per_length - rho * t.area) * g;
+    const double expected = (*m - rho * area) * g;
     if (w && rho > 0.0 && std::abs(*w - expected) > 1e-3 * std::abs(expected)) {
       diag.error(*n, f.path("weight_in_water") +
                          ": does not match the mass and diameter in this water (got " +
@@ -129,6 +127,40 @@ std::optional<LineType> readLineType(Input& in, const MapEntry& e, double rho, d
       return std::nullopt;
     }
   }
+  // The mooring codes' law, N = EA (lambda - 1), unless `strain: green` (Eq. 2.53).
+  std::optional<bool> engineering = true;
+  if (const YAML::Node* s = f.find("strain"))
+    engineering = in.choice<bool>(*s, f.path("strain"), {{"green", false}, {"engineering", true}});
+  std::optional<material::Compression> compression = material::Compression::TensionOnly;
+  if (const YAML::Node* c = f.find("compression"))
+    compression = in.choice(*c, f.path("compression"), compressionChoices());
+  const std::optional<LineHydroSpec> hydro = readLineHydro(b, f);
+  element::CableSection damped;
+  const YAML::Node* damping = f.find("damping");
+  if (damping && !readLineDamping(b, *damping, f.path("damping"), damped)) return std::nullopt;
+  if (!engineering || !compression || !hydro) return std::nullopt;
+  LineType t = LineType::of(*d, *m, *ea, *hydro, *engineering, *compression);
+  t.section.axial_damping = damped.axial_damping;
+  t.section.damping_ratio = damped.damping_ratio;
+  return t;
+}
+
+LineType LineType::of(double diameter, double mass_per_length, double ea, LineHydroSpec hydro,
+                      bool engineering_strain, material::Compression compression) {
+  LineType t;
+  t.area = kPi * diameter * diameter / 4.0;
+  t.mass_per_length = mass_per_length;
+  t.ea = ea;
+  t.diameter = diameter;
+  const double E = ea / t.area;
+  t.section.area = t.area;
+  t.section.density = mass_per_length / t.area;
+  t.section.material = engineering_strain
+                           ? std::shared_ptr<const material::CableMaterial>(
+                                 std::make_shared<material::EngineeringStrainCable>(E, compression))
+                           : std::make_shared<material::LinearElasticCable>(E, compression);
+  t.hydro = hydro;
+  t.hydro.coefficients.diameter = diameter;
   return t;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// The line types and mooring lines of scenario: spread_mooring (spread_mooring.cpp) as
-// read, and whether each can start on its catenary: parsing and the catenary check only.
+// The line types and mooring lines of scenario: spread_mooring (spread_mooring.hpp) as read,
+// and whether each can start on its catenary: parsing and the catenary check only.
 //
 //   line_types: {NAME: {diameter, mass_per_length, EA, weight_in_water, ...}, ...}
 //   mooring_lines:
@@ -22,13 +22,26 @@
 #include <vector>
 
 #include "apps/case/input/yaml_input.hpp"
+#include "apps/problem/ocean_spec.hpp"
+#include "libstruct/element/cable_element.hpp"
 
 namespace flexmoor::app {
 
-// A line type as read: what its section and the catenary start need, and its hydro keys.
+struct CaseBuilder;
+
+// A line type: its section (area pi d^2 / 4, density mass_per_length / area, a linear elastic
+// material of modulus EA / area, its axial damping) and its Morison coefficients.
 struct LineType {
   double area = 0.0, mass_per_length = 0.0, ea = 0.0, diameter = 0.0;
-  YAML::Node node;  // its map in the file, for the keys copied with their place
+  element::CableSection section;
+  LineHydroSpec hydro;
+
+  // A line type of this diameter, mass per length and EA with these Morison coefficients (their
+  // diameter set to it), its law linear in the engineering strain (the mooring codes', N = EA
+  // (lambda - 1)) or else Eq. 2.53's; no axial damping until section.axial_damping is set.
+  static LineType of(double diameter, double mass_per_length, double ea, LineHydroSpec hydro,
+                     bool engineering_strain = true,
+                     material::Compression compression = material::Compression::TensionOnly);
 };
 
 struct MooringSegment {
@@ -37,10 +50,11 @@ struct MooringSegment {
   int elements = 20, order = 3;
 };
 
+// A clump weight or a buoy at a connection point: a point mass of its mass, a point body of its
+// volume (hydro::PointBody: drag_area is Cd times the projected area, added_mass its Ca).
 struct MooringAttachment {
   int at = 0;  // the connection point, 1-based
-  double mass = 0.0, volume = 0.0;
-  std::optional<YAML::Node> drag_area, added_mass;  // as given, for the body's keys
+  double mass = 0.0, volume = 0.0, drag_area = 0.0, added_mass = 0.0;
 };
 
 struct MooringLine {
@@ -51,7 +65,8 @@ struct MooringLine {
   double length() const;
 };
 
-std::optional<LineType> readLineType(Input& in, const MapEntry& e, double rho, double g);
+// One entry of line_types: (its hydro and damping keys read as a section's, case_builder.hpp).
+std::optional<LineType> readLineType(CaseBuilder& b, const MapEntry& e, double rho, double g);
 
 // One item of mooring_lines: (its types checked against `types`, errors at their lines).
 std::optional<MooringLine> readMooringLine(Input& in, const YAML::Node& item,

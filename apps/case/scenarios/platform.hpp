@@ -1,7 +1,6 @@
 #pragma once
-// A scenario's rigid platform with a prescribed 6-dof motion about its reference point
-// (`platform:` of scenario: spread_mooring), and the histories that move the points it carries
-// (histories of type rigid_point, read_histories.cpp):
+// A spread mooring's rigid platform with a prescribed 6-dof motion about its reference point,
+// which carries the fairleads (`platform:` of scenario: spread_mooring):
 //
 //   platform:
 //     reference: [0, 0, 0 m]                                # default: the origin
@@ -19,30 +18,22 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Dense>
-#include <array>
+#include <memory>
 #include <optional>
 
-#include "apps/case/input/yaml_input.hpp"
+#include "libstruct/model/rigid_body_motion.hpp"
 
 namespace flexmoor::app {
 
-struct PlatformMotion {
+struct CaseBuilder;
+
+// The rigid platform that carries the fairleads: its reference point and its motion about it.
+struct PlatformSpec {
   Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-  // surge, sway, heave, roll, pitch, yaw as given (checked), for the histories to read
-  std::array<std::optional<YAML::Node>, 6> motions;
-  std::optional<YAML::Node> ramp;  // `ramp:` as given, for the histories to read
+  std::shared_ptr<model::RigidBodyMotion> motion;
 };
 
-// Reads `platform:` (errors at their lines in in.diag; nullopt when wrong).
-std::optional<PlatformMotion> readPlatform(Input& in, const YAML::Node& n);
-
-// The platform's motion as a history of type rigid_motion, which the case names `platform`.
-YAML::Node platformMotionHistory(const PlatformMotion& p);
-
-// The history of component (0, 1, 2 = x, y, z) of the displacement that takes a support from
-// `from` to the platform's point now at `point`: (point - from) at rest, plus the motion of the
-// history `platform` (platformMotionHistory).
-YAML::Node platformPointHistory(const PlatformMotion& p, const Eigen::Vector3d& point,
-                                const Eigen::Vector3d& from, int component);
+// Reads `platform:` (errors at their lines; nullopt when wrong).
+std::optional<PlatformSpec> readPlatform(CaseBuilder& b, const YAML::Node& n);
 
 }  // namespace flexmoor::app
