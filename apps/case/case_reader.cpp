@@ -14,6 +14,7 @@
 #include "apps/case/input/nearest_names.hpp"
 #include "apps/case/input/yaml_load.hpp"
 #include "apps/case/scenarios/scenario.hpp"
+#include "apps/case/scenarios/scenario_model.hpp"
 #include "apps/common/data_dir.hpp"
 
 namespace flexmoor::app {
@@ -109,11 +110,11 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   Diagnostics diag(path);
   const YAML::Node root = expandScenario(diag, document.root);
   diag.throwIfAny();  // a scenario that could not be expanded: its own messages say why
-  const bool spread = isSpreadMooring(root);
+  const SpecScenario* stated = specScenarioOf(root);  // a scenario read into specifications
   Case c;
   c.file = path;
   c.model = std::make_unique<model::Model>();
-  Fields top(diag, root, "", spread ? spreadMooringKeys() : kTopKeys);
+  Fields top(diag, root, "", stated ? stated->keys() : kTopKeys);
   if (const YAML::Node* u = top.require("units"))
     c.units = Input(diag, UnitSystem::SI)
                   .choice(*u, "units",
@@ -125,8 +126,8 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   c.name = readName(diag, b.in, top, path);
   if (const YAML::Node* t = top.find("title")) c.title = b.in.text(*t, "title").value_or("");
   std::optional<ScenarioModel> scenario;
-  if (spread) {
-    scenario = readSpreadMooring(b, top);
+  if (stated) {
+    scenario = stated->read(b, top);
     diag.throwIfAny();  // a scenario that cannot stand for a model: its own messages say why
   }
 
@@ -152,13 +153,13 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   if (b.ocean.has_water) addMorison(b);
   resolveEnclosedFluids(b);
   if (scenario)
-    readScenarioSteps(b, top);
+    readScenarioSteps(b, top, *scenario);
   else if (const YAML::Node* steps = top.require("steps"))
     readSteps(b, *steps);
   readSummary(b, section("summary"));
   readOutput(b, section("output"));
   readFigure(b, section("figure"));
-  if (scenario) addScenarioDefaults(b, top, *scenario);
+  if (scenario) stated->add_defaults(b, top, *scenario);
   if (series) readForeignSeries(b, *series);
 
   buildMesh(b.mesh, *c.model);

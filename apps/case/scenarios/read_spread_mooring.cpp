@@ -30,23 +30,12 @@
 #include <algorithm>
 
 #include "apps/case/case_builder.hpp"
-#include "apps/case/scenarios/scenario.hpp"
+#include "apps/case/scenarios/scenario_model.hpp"
 #include "apps/case/scenarios/spread_mooring.hpp"
 #include "apps/case/scenarios/yaml_text.hpp"
 
 namespace flexmoor::app {
 namespace {
-
-const char* elementType(ElementSpec::Kind kind) {
-  switch (kind) {
-    case ElementSpec::Kind::Cable:
-      return "cable";
-    case ElementSpec::Kind::PointMass:
-      return "point_mass";
-    default:
-      return "";  // a spread mooring has no other
-  }
-}
 
 // Where each node and element of the scenario's model comes from: the item of its line.
 ModelOrigins originsOf(const SpreadMooringSpec& spec, const CaseSpec& c,
@@ -123,62 +112,16 @@ std::optional<ScenarioModel> readSpreadMooring(CaseBuilder& b, Fields& top) {
   }
   checkScenarioStepKeys(diag, top, {"statics", "dynamic"});
   if (!diag.empty() || spec.lines.size() != items.size()) return std::nullopt;
-  ScenarioModel model{spreadMooring(spec), {}};
+  ScenarioModel model{spreadMooring(spec), {}, {}};
   model.origins = originsOf(spec, model.spec, item_lines);
+  StepSpec dynamic;
+  dynamic.kind = StepSpec::Kind::Dynamic;
+  dynamic.name = "dynamic";
+  model.steps = {{"statics", spreadMooringStatics(), true}, {"dynamic", dynamic, false}};
   return model;
 }
 
-void addScenarioModel(CaseBuilder& b, const ScenarioModel& model) {
-  const CaseSpec& s = model.spec;
-  b.mesh = s.mesh;
-  b.origins = model.origins;
-  for (int node = 0; node < s.mesh.nodeCount(); ++node) {
-    b.c.node_ids.push_back(node + 1);
-    b.node_of_id[node + 1] = node;
-  }
-  for (const ElementSpec& e : s.mesh.elements) b.element_types.push_back(elementType(e.kind));
-  for (const CaseLine& line : s.lines) {
-    b.c.lines[line.name] = line.nodes;
-    b.c.named_lines.push_back(line);
-    b.line_elements[line.name] = line.elements;
-    b.line_order.push_back(line.name);
-    if (line.anchor != CaseLine::Anchor::None) b.line_anchors[line.name] = line.anchor;
-    if (!line.segment_of.empty()) ++b.line_segments[line.segment_of];
-  }
-  b.conditions = s.conditions;
-  for (size_t i = 0; i < s.conditions.supports.size(); ++i) {
-    const SupportSpec& support = s.conditions.supports[i];
-    b.first_support.emplace(3LL * support.node + support.component, i);
-  }
-  b.gravity_given = s.conditions.gravity.has_value();
-  b.c.rigid_motions = s.rigid_motions;
-  b.histories = s.histories;
-  b.catenary_starts = s.catenary_starts;
-}
-
-void addScenarioOcean(CaseBuilder& b, const ScenarioModel& model, bool seabed_given) {
-  const OceanSpec& ocean = model.spec.ocean;
-  b.ocean.morison = ocean.morison;
-  b.ocean.bodies = ocean.bodies;
-  if (seabed_given) return;
-  b.ocean.has_contact = ocean.has_contact;
-  b.ocean.contact = ocean.contact;
-}
-
-void readScenarioSteps(CaseBuilder& b, Fields& top) {
-  if (const YAML::Node* steps = top.find("steps")) {
-    readSteps(b, *steps);
-    return;
-  }
-  readStepOf(b, spreadMooringStatics(), top.find("statics"), "statics", "equilibrium");
-  if (const YAML::Node* n = top.find("dynamic")) {
-    StepSpec dynamic;
-    dynamic.kind = StepSpec::Kind::Dynamic;
-    readStepOf(b, dynamic, n, "dynamic", "dynamic");
-  }
-}
-
-void addScenarioDefaults(CaseBuilder& b, Fields& top, const ScenarioModel& model) {
+void addSpreadMooringDefaults(CaseBuilder& b, Fields& top, const ScenarioModel& model) {
   if (!top.find("summary")) {
     CaseSpec read = model.spec;  // as the case has it: its ocean, its steps
     read.ocean = b.ocean;
@@ -188,11 +131,6 @@ void addScenarioDefaults(CaseBuilder& b, Fields& top, const ScenarioModel& model
   }
   if (!top.find("figure"))
     b.c.figure = FigureSpec{FigureSpec::Kind::Mooring, {}, "", {b.diag.file(), 0}};
-}
-
-bool isSpreadMooring(const YAML::Node& root) {
-  return root.IsMap() && root["scenario"] && root["scenario"].IsScalar() &&
-         root["scenario"].Scalar() == "spread_mooring";
 }
 
 }  // namespace flexmoor::app

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "apps/case/input/yaml_input.hpp"
+#include "apps/case/scenarios/scenario_model.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -21,7 +22,7 @@ const Scenario kScenarios[] = {
 std::string scenarioNames() {
   std::string names;
   for (const Scenario& s : kScenarios) names += std::string(s.name) + " | ";
-  return names + "spread_mooring";
+  return names + specScenarioNames();
 }
 
 }  // namespace
@@ -29,7 +30,7 @@ std::string scenarioNames() {
 YAML::Node expandScenario(Diagnostics& diag, const YAML::Node& root) {
   if (!root.IsMap() || !root["scenario"]) return root;
   const YAML::Node s = root["scenario"];
-  if (s.IsScalar() && s.Scalar() == "spread_mooring") return root;
+  if (specScenarioOf(root)) return root;
   if (s.IsScalar())
     for (const Scenario& known : kScenarios)
       if (s.Scalar() == known.name) return known.expand(diag, root);
