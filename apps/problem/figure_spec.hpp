@@ -17,6 +17,16 @@ struct FigureSpec {
   std::vector<std::string> series;
   std::string title;  // empty: the case's title
   SourceLocation where;
+
+  // The series of a node quantity (position_x, speed, ...) at model node `node`, and of the end
+  // tension of element `element` at its first (0) or last (1) end, as the plotting script reads
+  // them.
+  static std::string nodeSeries(const std::string& quantity, int node) {
+    return quantity + "@node=" + std::to_string(node + 1);
+  }
+  static std::string tensionSeries(int element, int end) {
+    return "tension_end@element=" + std::to_string(element + 1) + ",end=" + std::to_string(end + 1);
+  }
 };
 
 }  // namespace flexmoor::app

@@ -62,7 +62,7 @@ std::optional<std::string> readSeries(CaseBuilder& b, const YAML::Node& item,
   if (is_node) {
     const auto node = nodeOfEntry(b, f);
     if (!node) return std::nullopt;
-    return *quantity + "@node=" + std::to_string(*node + 1);
+    return FigureSpec::nodeSeries(*quantity, *node);
   }
   const int count = static_cast<int>(b.element_types.size());
   const auto element_id = [&](const YAML::Node& e, const std::string& at) -> std::optional<int> {
@@ -85,8 +85,7 @@ std::optional<std::string> readSeries(CaseBuilder& b, const YAML::Node& item,
     at = elementEndOfEntry(b, f, element_id);
   }
   if (!at) return std::nullopt;
-  return "tension_end@element=" + std::to_string(at->element + 1) +
-         ",end=" + std::to_string(at->end + 1);
+  return FigureSpec::tensionSeries(at->element, at->end);
 }
 
 // Whether the case has a line with an anchor end (what a mooring figure draws).
@@ -105,18 +104,19 @@ void readFigure(CaseBuilder& b, const YAML::Node& n) {
   if (const YAML::Node* t = f.find("title"))
     figure.title = b.in.text(*t, f.path("title")).value_or("");
   if (const YAML::Node* k = f.find("kind"))
-    figure.kind = b.in
-                      .choice<FigureSpec::Kind>(*k, f.path("kind"),
+    figure.kind = b.in.choice<FigureSpec::Kind>(*k, f.path("kind"),
                                                 {{"series", FigureSpec::Kind::Series},
                                                  {"mooring", FigureSpec::Kind::Mooring}})
                       .value_or(figure.kind);
   if (figure.kind == FigureSpec::Kind::Mooring) {
     if (const YAML::Node* s = f.find("series"))
-      b.diag.error(*s, f.path("series") + ": not a key of a mooring figure (got series, expected "
-                                          "kind: series for time series of your choice)");
+      b.diag.error(*s, f.path("series") +
+                           ": not a key of a mooring figure (got series, expected "
+                           "kind: series for time series of your choice)");
     else if (!anchoredLine(b))
-      b.diag.error(n, "figure: a mooring figure needs a line with an anchor (got none, expected "
-                      "mooring_lines: or a line with anchor: start | end)");
+      b.diag.error(n,
+                   "figure: a mooring figure needs a line with an anchor (got none, expected "
+                   "mooring_lines: or a line with anchor: start | end)");
     else
       b.c.figure = std::move(figure);
     return;

@@ -1,7 +1,9 @@
 // The table of scenarios: `scenario: NAME` picks the expansion that writes the full case.
 #include "apps/case/scenarios/scenario.hpp"
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "apps/case/input/yaml_input.hpp"
 #include "apps/case/scenarios/scenario_model.hpp"
@@ -15,14 +17,17 @@ struct Scenario {
 };
 
 const Scenario kScenarios[] = {
-    {"single_point_moor", expandSinglePointMoor},
     {"submerged_tube", expandSubmergedTube},
 };
 
+// Every scenario's name, in alphabetical order: "single_point_moor | spread_mooring | ...".
 std::string scenarioNames() {
-  std::string names;
-  for (const Scenario& s : kScenarios) names += std::string(s.name) + " | ";
-  return names + specScenarioNames();
+  std::vector<std::string> names = specScenarioNames();
+  for (const Scenario& s : kScenarios) names.push_back(s.name);
+  std::sort(names.begin(), names.end());
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : " | ") + name;
+  return list;
 }
 
 }  // namespace

@@ -18,7 +18,6 @@ YAML::Node expandScenario(Diagnostics& diag, const YAML::Node& root);
 
 // The scenarios, one file each (scenario_NAME.cpp), listed in scenario.cpp: each turns a case
 // that names it into the full document.
-YAML::Node expandSinglePointMoor(Diagnostics& diag, const YAML::Node& root);
 YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root);
 
 }  // namespace flexmoor::app

@@ -26,6 +26,7 @@ const char* elementType(ElementSpec::Kind kind) {
 }
 
 const SpecScenario kScenarios[] = {
+    {"single_point_moor", singlePointMoorKeys, readSinglePointMoor, addSinglePointMoorDefaults},
     {"spread_mooring", spreadMooringKeys, readSpreadMooring, addSpreadMooringDefaults},
 };
 
@@ -38,10 +39,9 @@ const SpecScenario* specScenarioOf(const YAML::Node& root) {
   return nullptr;
 }
 
-std::string specScenarioNames() {
-  std::string names;
-  for (const SpecScenario& s : kScenarios)
-    names += (names.empty() ? "" : " | ") + std::string(s.name);
+std::vector<std::string> specScenarioNames() {
+  std::vector<std::string> names;
+  for (const SpecScenario& s : kScenarios) names.push_back(s.name);
   return names;
 }
 

@@ -42,8 +42,8 @@ struct SpecScenario {
 
 // The scenario read into specifications that the document names, or null.
 const SpecScenario* specScenarioOf(const YAML::Node& root);
-// "spread_mooring | ...", for the message that lists every scenario.
-std::string specScenarioNames();
+// Their names, for the message that lists every scenario.
+std::vector<std::string> specScenarioNames();
 
 // The scenario's model where the reader reads the case's other sections on top of it: its mesh,
 // named lines, supports, gravity, catenary starts and named histories and rigid motions
@@ -58,5 +58,8 @@ void readScenarioSteps(CaseBuilder& b, Fields& top, const ScenarioModel& model);
 const std::vector<std::string>& spreadMooringKeys();
 std::optional<ScenarioModel> readSpreadMooring(CaseBuilder& b, Fields& top);
 void addSpreadMooringDefaults(CaseBuilder& b, Fields& top, const ScenarioModel& model);
+const std::vector<std::string>& singlePointMoorKeys();
+std::optional<ScenarioModel> readSinglePointMoor(CaseBuilder& b, Fields& top);
+void addSinglePointMoorDefaults(CaseBuilder& b, Fields& top, const ScenarioModel& model);
 
 }  // namespace flexmoor::app
