@@ -32,12 +32,13 @@ std::vector<Eigen::Vector2d> naturalNodes(const ElementKind& k) {
 class SurfaceNodeMaker {
  public:
   static constexpr int kLattice = 6;
-  SurfaceNodeMaker(CaseBuilder& b, const SurfaceMap& map, std::array<int, 2> divisions, int line)
-      : b_(b),
+  SurfaceNodeMaker(const model::NodalField& reference, const SurfaceMap& map,
+                   std::array<int, 2> divisions,
+                   const std::function<int(const Eigen::Vector3d&)>& add_node)
+      : add_node_(add_node),
         map_(map),
         divisions_(divisions),
-        line_(line),
-        index_(b.mesh.reference, 1e-9 * std::max(map.size(), 1e-300)) {}
+        index_(reference, 1e-9 * std::max(map.size(), 1e-300)) {}
 
   // The node at lattice point (u, v), made on first use.
   int node(int u, int v) {
@@ -47,7 +48,7 @@ class SurfaceNodeMaker {
                                    static_cast<double>(v) / (kLattice * divisions_[1]));
     int n = index_.find(x);
     if (n < 0) {
-      n = b_.addGeneratedNode(x, line_);
+      n = add_node_(x);
       index_.add(x, n);
     }
     lattice_[key] = n;
@@ -57,10 +58,9 @@ class SurfaceNodeMaker {
   const std::vector<int>& nodes() const { return nodes_; }
 
  private:
-  CaseBuilder& b_;
+  const std::function<int(const Eigen::Vector3d&)>& add_node_;
   const SurfaceMap& map_;
   std::array<int, 2> divisions_;
-  int line_;
   NodeIndex index_;
   std::unordered_map<long long, int> lattice_;
   std::vector<int> nodes_;
@@ -122,12 +122,12 @@ Eigen::Vector3d SurfaceMap::operator()(double s, double t) const {
   return origin;
 }
 
-void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<CableRow>& rows,
-                     int line) {
+SurfaceElements meshSurface(const model::NodalField& reference, const SurfaceSpec& s,
+                            const std::vector<CableRow>& rows,
+                            const std::function<int(const Eigen::Vector3d&)>& add_node) {
   const int L = SurfaceNodeMaker::kLattice;
-  SurfaceNodeMaker maker(b, s.map, s.divisions, line);
-  PendingSurface pending{s.name, line, {}};
-  const std::string section_name = b.sectionName(s.section);
+  SurfaceNodeMaker maker(reference, s.map, s.divisions, add_node);
+  SurfaceElements out;
   const std::vector<Eigen::Vector2d> natural = naturalNodes(s.kind);
   const element::MembraneSection& section = s.section->membrane;
   if (s.map.shape == SurfaceShape::Meridian) {
@@ -135,12 +135,10 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
       std::vector<int> nodes;
       for (int k = 0; k <= s.kind.order; ++k)
         nodes.push_back(maker.node(L * e + L * k / s.kind.order, 0));
-      pending.elements.push_back({"axisymmetric_membrane", section_name,
-                                  ElementSpec::membrane(ElementSpec::Kind::AxisymmetricMembrane,
-                                                        nodes, section, s.section->quadrature)});
+      out.elements.push_back({"axisymmetric_membrane", nullptr,
+                              ElementSpec::membrane(ElementSpec::Kind::AxisymmetricMembrane, nodes,
+                                                    section, s.section->quadrature)});
     }
-    for (int node : maker.nodes())  // y carries nothing
-      b.conditions.supports.push_back({node, 1, 0.0, nullptr, 0});
   } else {
     for (int j = 0; j < s.divisions[1]; ++j)
       for (int i = 0; i < s.divisions[0]; ++i) {
@@ -173,8 +171,8 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
           }
         }
         for (std::vector<int>& nodes : cells)
-          pending.elements.push_back(
-              {"membrane", section_name,
+          out.elements.push_back(
+              {"membrane", nullptr,
                ElementSpec::membrane(s.kind.triangle ? ElementSpec::Kind::MembraneTriangle
                                                      : ElementSpec::Kind::MembraneQuad,
                                      std::move(nodes), section, s.section->quadrature)});
@@ -183,8 +181,8 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
   for (const CableRow& row : rows) {
     if (s.map.shape == SurfaceShape::Meridian) {  // a hoop ring at the node of boundary `at`
       const int node = maker.node(L * row.boundary, 0);
-      pending.elements.push_back({"hoop_cable", b.sectionName(row.section),
-                                  ElementSpec::hoopCable(node, row.section->section)});
+      out.elements.push_back(
+          {"hoop_cable", row.section, ElementSpec::hoopCable(node, row.section->section)});
       continue;
     }
     const int cells = s.divisions[row.direction];
@@ -195,12 +193,28 @@ void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<Cab
         nodes.push_back(row.direction == 0 ? maker.node(along, across) : maker.node(across, along));
       }
       if (nodes.front() == nodes.back()) continue;  // a row through the centre of a disc
-      pending.elements.push_back(
-          {"cable", b.sectionName(row.section),
+      out.elements.push_back(
+          {"cable", row.section,
            ElementSpec::cable(nodes, row.section->section, row.section->quadrature)});
     }
   }
-  b.surfaces[s.name] = maker.nodes();
+  out.nodes = maker.nodes();
+  return out;
+}
+
+void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<CableRow>& rows,
+                     int line) {
+  SurfaceElements mesh = meshSurface(b.mesh.reference, s, rows, [&](const Eigen::Vector3d& x) {
+    return b.addGeneratedNode(x, line);
+  });
+  if (s.map.shape == SurfaceShape::Meridian)
+    for (int node : mesh.nodes)  // y carries nothing
+      b.conditions.supports.push_back({node, 1, 0.0, nullptr, 0});
+  PendingSurface pending{s.name, line, {}};
+  for (SurfaceElements::Generated& e : mesh.elements)
+    pending.elements.push_back(
+        {e.type, b.sectionName(e.row_section ? e.row_section : s.section), std::move(e.element)});
+  b.surfaces[s.name] = std::move(mesh.nodes);
   b.surface_elements.push_back(std::move(pending));
 }
 

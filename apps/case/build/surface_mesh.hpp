@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,24 @@ struct CableRow {
   int boundary;
   const SectionSpec* section;
 };
+
+// A surface's mesh: its membrane elements, cell by cell, then the cables of each row, on the
+// nodes `add_node` makes at points where `reference` has none (it returns the new node's
+// index; the nodes made so far are merged too).
+struct SurfaceElements {
+  std::vector<int> nodes;  // the surface's, in the order first used
+  // Each element and its element_types entry ("membrane", "axisymmetric_membrane", "cable",
+  // "hoop_cable"), with the section that made it (null for the surface's own).
+  struct Generated {
+    const char* type;
+    const SectionSpec* row_section;
+    ElementSpec element;
+  };
+  std::vector<Generated> elements;
+};
+SurfaceElements meshSurface(const model::NodalField& reference, const SurfaceSpec& s,
+                            const std::vector<CableRow>& rows,
+                            const std::function<int(const Eigen::Vector3d&)>& add_node);
 
 // Adds the surface's nodes (merged with existing ones), its membrane elements, cell by cell, then
 // the cables of each row, as a PendingSurface of the builder, and records its nodes by name.
