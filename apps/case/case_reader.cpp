@@ -13,7 +13,6 @@
 #include "apps/case/case_builder.hpp"
 #include "apps/case/input/nearest_names.hpp"
 #include "apps/case/input/yaml_load.hpp"
-#include "apps/case/scenarios/scenario.hpp"
 #include "apps/case/scenarios/scenario_model.hpp"
 #include "apps/common/data_dir.hpp"
 
@@ -108,9 +107,9 @@ CaseDocument loadCaseFromText(const std::string& text, const std::string& name) 
 Case readCase(const CaseDocument& document, ForeignSeries* series) {
   const std::string& path = document.path;
   Diagnostics diag(path);
-  const YAML::Node root = expandScenario(diag, document.root);
-  diag.throwIfAny();  // a scenario that could not be expanded: its own messages say why
-  const SpecScenario* stated = specScenarioOf(root);  // a scenario read into specifications
+  const YAML::Node& root = document.root;
+  const Scenario* stated = scenarioOf(diag, root);
+  diag.throwIfAny();  // an unknown scenario
   Case c;
   c.file = path;
   c.model = std::make_unique<model::Model>();
@@ -159,7 +158,7 @@ Case readCase(const CaseDocument& document, ForeignSeries* series) {
   readSummary(b, section("summary"));
   readOutput(b, section("output"));
   readFigure(b, section("figure"));
-  if (scenario) stated->add_defaults(b, top, *scenario);
+  if (scenario) addScenarioDefaults(b, top, *scenario);
   if (series) readForeignSeries(b, *series);
 
   buildMesh(b.mesh, *c.model);

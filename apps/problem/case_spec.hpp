@@ -45,6 +45,8 @@ struct CaseSpec {
   OutputFields output = OutputFields::all();
   std::optional<FigureSpec> figure;
   std::vector<CaseLine> lines;  // named lines: their nodes, start to end, and elements
+  std::map<std::string, std::vector<int>> surfaces;      // the nodes of each named surface
+  std::map<std::string, std::vector<int>> element_sets;  // named groups of elements (surfaces)
 };
 
 }  // namespace flexmoor::app

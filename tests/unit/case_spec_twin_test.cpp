@@ -14,6 +14,7 @@
 #include "apps/run/simulation.hpp"
 #include "libstruct/material/cable_material.hpp"
 #include "tests/support/case_files.hpp"
+#include "tests/support/twin_runs.hpp"
 
 namespace flexmoor::test {
 namespace {
@@ -85,19 +86,9 @@ app::SimulationResult run(const app::Case& c) {
 TEST(CaseSpecTwin, Example1InCodeIsItsCaseFileToTheBit) {
   const app::Case file = app::readCase(writeCase("ex1-twin.yaml", kExample1));
   const app::Case code = app::buildCase(example1InCode());
+  expectSameModel(*file.model, *code.model);
   const model::Model &a = *file.model, &b = *code.model;
-  ASSERT_EQ(a.nodeCount(), b.nodeCount());
-  ASSERT_EQ(a.elementCount(), b.elementCount());
-  ASSERT_EQ(a.equationCount(), b.equationCount());
-  EXPECT_EQ(a.reference(), b.reference());
-  for (int e = 0; e < a.elementCount(); ++e) EXPECT_EQ(a.element(e).nodes(), b.element(e).nodes());
-  for (int n = 0; n < a.nodeCount(); ++n)
-    for (int k = 0; k < 3; ++k) {
-      EXPECT_EQ(a.equation(n, k), b.equation(n, k)) << n << " " << k;
-      EXPECT_EQ(a.prescribed(n, k), b.prescribed(n, k)) << n << " " << k;
-    }
-  EXPECT_EQ(a.gravity(), b.gravity());
-  ASSERT_EQ(a.nodalLoads().size(), b.nodalLoads().size());
+  ASSERT_EQ(a.nodalLoads().size(), 1u);
   EXPECT_EQ(a.nodalLoads()[0].node, b.nodalLoads()[0].node);
   EXPECT_EQ(a.nodalLoads()[0].force, b.nodalLoads()[0].force);
   EXPECT_EQ(file.lines, code.lines);
@@ -111,30 +102,22 @@ TEST(CaseSpecTwin, Example1InCodeIsItsCaseFileToTheBit) {
 }
 
 TEST(CaseSpecTwin, WhatTheSpecificationsGetWrongIsRefusedWithItsReason) {
-  const auto refused = [](const app::CaseSpec& spec, const std::string& part) {
-    try {
-      app::buildCase(spec);
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-      return;
-    }
-    ADD_FAILURE() << "not refused: " << part;
-  };
   app::CaseSpec spec = example1InCode();
   spec.conditions.nodal_loads.push_back({42, Eigen::Vector3d::UnitX(), nullptr});
-  refused(spec, "a load: node 42 is not in the mesh (9 nodes, 0-based)");
+  expectRefused(spec, "a load: node 42 is not in the mesh (9 nodes, 0-based)");
   spec = example1InCode();
   spec.steps.clear();
-  refused(spec, "no steps");
+  expectRefused(spec, "no steps");
   spec = example1InCode();
   for (int n = 0; n < spec.mesh.nodeCount(); ++n)
     for (int k = 0; k < 3; ++k) spec.conditions.supports.push_back({n, k, 0.0, nullptr, 0});
-  refused(spec, "every dof is fixed");
+  expectRefused(spec, "every dof is fixed");
   spec = example1InCode();  // a liquid in no membranes, one in an element not in the mesh
   spec.enclosed_fluids.push_back({{}, {1000.0, 0.0, 0.0, 0.0}, 0, "water in nothing"});
   spec.enclosed_fluids.push_back({{99}, {1000.0, 0.0, 0.0, 0.0}, 0, "water in 99"});
-  refused(spec, "ex1-in-code: water in nothing.on: names no membranes");
-  refused(spec, "ex1-in-code: water in 99.on: element 99 is not in the mesh (8 elements, 0-based)");
+  expectRefused(spec, "ex1-in-code: water in nothing.on: names no membranes");
+  expectRefused(spec,
+                "ex1-in-code: water in 99.on: element 99 is not in the mesh (8 elements, 0-based)");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // A scenario stated in code through its function and the same scenario read from its case file
 // give the same model and the same results, to the bit: single_point_moor (singlePointMoor),
-// Example 8's case with its values in the case's units written to 17 digits.
+// Example 8's case, and submerged_tube (submergedTube), Example 9's, with their values in the
+// case's units written to 17 digits.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,9 +12,12 @@
 #include "apps/case/build/build_case.hpp"
 #include "apps/case/case_reader.hpp"
 #include "apps/case/scenarios/single_point_moor.hpp"
-#include "apps/output/memory_sink.hpp"
+#include "apps/case/scenarios/submerged_tube.hpp"
 #include "apps/run/simulation.hpp"
+#include "libstruct/material/cable_material.hpp"
+#include "libstruct/material/membrane_material.hpp"
 #include "tests/support/case_files.hpp"
+#include "tests/support/twin_runs.hpp"
 
 namespace flexmoor::test {
 namespace {
@@ -25,40 +29,16 @@ std::string number(double v) {
   return s.str();
 }
 
-// A run and every record it makes.
-struct Recorded {
-  app::SimulationResult result;
-  app::MemorySink records;
-};
-
-void run(const app::Case& c, Recorded& out) {
-  std::ostringstream log, diag;
-  app::Simulation simulation(c, log, diag);
-  simulation.addSink(out.records);
-  out.result = simulation.run();
-}
-
 void expectSameRun(const app::Case& file, const app::Case& code) {
-  ASSERT_EQ(file.model->reference(), code.model->reference());
-  ASSERT_EQ(file.model->elementCount(), code.model->elementCount());
+  expectSameModel(*file.model, *code.model);
   EXPECT_EQ(file.lines, code.lines);
-  Recorded a, b;
-  run(file, a);
-  run(code, b);
-  ASSERT_EQ(b.result.exit_code, app::kSuccess);
-  ASSERT_EQ(a.records.frames().size(), b.records.frames().size());
+  RecordedRun a, b;
+  runRecorded(file, a);
+  runRecorded(code, b);
+  expectSameRecords(a, b);
   ASSERT_GT(b.records.frames().size(), 2u);
-  for (size_t i = 0; i < a.records.frames().size(); ++i) {
-    const model::State &s = *a.records.frames()[i].state, &t = *b.records.frames()[i].state;
-    ASSERT_EQ(s.time, t.time) << i;
-    ASSERT_EQ(s.displacement, t.displacement) << "record " << i << " at t = " << s.time;
-    ASSERT_EQ(s.velocity, t.velocity) << i;
-  }
-  ASSERT_EQ(a.result.summary.size(), b.result.summary.size());
-  for (size_t i = 0; i < a.result.summary.size(); ++i) {
-    EXPECT_EQ(a.result.summary[i].first, b.result.summary[i].first);
-    EXPECT_EQ(a.result.summary[i].second, b.result.summary[i].second) << a.result.summary[i].first;
-  }
+  expectSameSummary(a, b);
+  EXPECT_FALSE(b.result.summary.empty());
   ASSERT_TRUE(code.figure.has_value());
   EXPECT_EQ(file.figure->series, code.figure->series);
 }
@@ -112,6 +92,74 @@ TEST(ScenarioSpecTwin, SinglePointMoorInCodeIsItsCaseFileToTheBit) {
   const app::Case code =
       app::buildCase(app::singlePointMoor(spec, {app::singlePointMoorHold(spec), release}));
   EXPECT_EQ(code.lines.at("cable").back(), 8);
+  expectSameRun(file, code);
+}
+
+// Example 9 in US units: the tube 10 ft across, its axis 45 ft down in 60 ft of water, a layer
+// of 0.5 ft of 6 Q8 elements, its wall 0.25 in of E = 500,000 psi, nu 0.3, 1.5228 slug/ft^3; the
+// liquid of specific gravity 0.9 at 5 psi over the sea at the axis; the cables of 0.06545 in^2,
+// E = 100,000 psi, 4.6584 slug/ft^3, 0.28868 in across, attached 30 deg from the bottom and
+// running 45 deg from the vertical; a regular wave 5 ft high, 5 s long.
+app::SubmergedTubeSpec example9() {
+  app::SubmergedTubeSpec spec;
+  spec.units = app::UnitSystem::US;
+  spec.water = {1.99, 60.0, 32.174};
+  spec.diameter = 10.0;
+  spec.axis_depth = 45.0;
+  spec.layer = 0.5;
+  spec.wall.thickness = 0.25 / 12.0;
+  spec.wall.density = 1.5228;
+  spec.wall.material = std::make_shared<material::LinearElasticPlaneStress>(500000.0 * 144.0, 0.3);
+  spec.liquid_density = 0.9 * 1.99;
+  spec.resultant = 5.0 * 144.0;
+  spec.attach_angle = M_PI / 6.0;
+  spec.angle = M_PI / 4.0;
+  spec.rope.area = 0.06545 / 144.0;
+  spec.rope.density = 4.6584;
+  spec.rope.material = std::make_shared<material::LinearElasticCable>(
+      100000.0 * 144.0, material::Compression::TensionOnly);
+  spec.hydro.coefficients = {0.28868 / 12.0,
+                             1.2,
+                             0.02,
+                             1.0,
+                             0.0,
+                             hydro::MorisonCoefficients::TangentialDragArea::Diameter};
+  return spec;
+}
+
+std::string example9File(const app::SubmergedTubeSpec& s) {
+  const auto& wall = s.wall;
+  return "units: US\nscenario: submerged_tube\nwater: {density: 1.99, depth: 60}\n"
+         "waves: {components: [{height: 5, period: 5}]}\ngravity: 32.174\n"
+         "tube: {diameter: 10, axis_depth: 45, layer: 0.5, thickness: " +
+         number(wall.thickness) + ", E: " + number(500000.0 * 144.0) +
+         ", nu: 0.3, density: 1.5228, elements: 6}\n"
+         "liquid: {specific_gravity: 0.9, resultant: " +
+         number(s.resultant) +
+         "}\n"
+         "mooring: {attach_angle: " +
+         number(s.attach_angle) + ", angle: " + number(s.angle) + ", area: " + number(s.rope.area) +
+         ", E: " + number(100000.0 * 144.0) +
+         ", density: 4.6584, elements: 3, order: 3, diameter: " +
+         number(s.hydro.coefficients.diameter) +
+         ", Cn: 1.2, Ct: 0.02, Ca: 1.0, CaAx: 0.0, tangential_drag_area: diameter}\n"
+         "dynamic: {dt: 0.02, steps: 25, pressure_stiffness: true}\n";
+}
+
+TEST(ScenarioSpecTwin, SubmergedTubeInCodeIsItsCaseFileToTheBit) {
+  const app::SubmergedTubeSpec spec = example9();
+  const app::Case file = app::readCase(writeCase("ex9-twin.yaml", example9File(spec)));
+  app::StepSpec waves;
+  waves.kind = app::StepSpec::Kind::Dynamic;
+  waves.name = "waves";
+  waves.dynamic.schedule = {{0.02, 25}};
+  waves.dynamic.pressure_load_stiffness = true;
+  app::CaseSpec code_spec = app::submergedTube(
+      spec, {app::submergedTubeEquilibrium(spec), app::submergedTubeModes(), waves});
+  code_spec.ocean.waves.push_back({5.0, 5.0, 0.0, 0.0, 0});
+  const app::Case code = app::buildCase(code_spec);
+  EXPECT_EQ(file.element_sets, code.element_sets);
+  EXPECT_EQ(code.element_sets.at("tube").size(), 6u);
   expectSameRun(file, code);
 }
 

@@ -96,6 +96,7 @@ Case buildCase(const CaseSpec& spec) {
   c.summary = spec.summary;
   c.output = spec.output;
   c.figure = spec.figure;
+  c.element_sets = spec.element_sets;
   for (const CaseLine& line : spec.lines) {
     c.lines[line.name] = line.nodes;
     c.named_lines.push_back(line);
@@ -103,7 +104,7 @@ Case buildCase(const CaseSpec& spec) {
   // The case file's checks of the built model.
   ModelOrigins origins = ModelOrigins::sourceless(spec.mesh.nodeCount(), spec.mesh.elementCount());
   origins.elements.resize(c.model->elementCount(), {0, "an enclosed liquid's lumped mass", ""});
-  checkModel({c, spec.mesh, spec.ocean, origins, {}, spec.histories, diag});
+  checkModel({c, spec.mesh, spec.ocean, origins, spec.surfaces, spec.histories, diag});
   for (const SpecError& e : diag.empty() ? startOnCatenaries(spec.catenary_starts, spec.ocean, c)
                                          : std::vector<SpecError>())
     diag.error(e.line, e.message);

@@ -352,8 +352,7 @@ void readStep(CaseBuilder& b, const YAML::Node& item, const std::string& path) {
   const MapEntry& e = entries[0];
   StepSpec step;
   step.kind = found->second;
-  // A step a scenario wrote has no place of its own: the map it was made from has one.
-  step.where = {b.diag.file(), lineOf(e.key_node) > 0 ? lineOf(e.key_node) : lineOf(e.value)};
+  step.where = {b.diag.file(), lineOf(e.key_node)};
   readStepKeys(b, std::move(step), e.value, childPath(path, e.key), found->first);
 }
 

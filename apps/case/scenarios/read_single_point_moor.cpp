@@ -18,9 +18,9 @@
 
 #include "apps/case/case_builder.hpp"
 #include "apps/case/input/units.hpp"
+#include "apps/case/scenarios/scenario_keys.hpp"
 #include "apps/case/scenarios/scenario_model.hpp"
 #include "apps/case/scenarios/single_point_moor.hpp"
-#include "apps/case/scenarios/yaml_text.hpp"
 #include "apps/common/format_number.hpp"
 
 namespace flexmoor::app {
@@ -177,24 +177,8 @@ std::optional<ScenarioModel> readSinglePointMoor(CaseBuilder& b, Fields& top) {
                                     : ElementOrigin{cable_line, "cable", "cable"};
   model.origins.node_lines.assign(model.spec.mesh.nodeCount(), cable_line);
   model.spec.ocean.bodies.front().line = buoy_line;
+  model.summary = singlePointMoorSummary;
   return model;
-}
-
-void addSinglePointMoorDefaults(CaseBuilder& b, Fields& top, const ScenarioModel& model) {
-  if (!top.find("summary")) {
-    b.c.summary = model.spec.summary;
-    for (SummarySpec& s : b.c.summary) s.where = {b.diag.file(), 0};
-  }
-  if (top.find("figure")) return;
-  FigureSpec figure = model.spec.figure.value();  // less the series the records do not hold
-  figure.where = {b.diag.file(), 0};
-  std::vector<std::string> written;
-  for (const std::string& series : figure.series) {
-    const auto field = OutputFields::ofVariable(series.substr(0, series.find('@')));
-    if (field && b.c.output.has(*field)) written.push_back(series);
-  }
-  figure.series = written;
-  if (!figure.series.empty()) b.c.figure = figure;
 }
 
 }  // namespace flexmoor::app

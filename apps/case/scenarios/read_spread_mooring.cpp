@@ -30,9 +30,9 @@
 #include <algorithm>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/scenarios/scenario_keys.hpp"
 #include "apps/case/scenarios/scenario_model.hpp"
 #include "apps/case/scenarios/spread_mooring.hpp"
-#include "apps/case/scenarios/yaml_text.hpp"
 
 namespace flexmoor::app {
 namespace {
@@ -112,25 +112,13 @@ std::optional<ScenarioModel> readSpreadMooring(CaseBuilder& b, Fields& top) {
   }
   checkScenarioStepKeys(diag, top, {"statics", "dynamic"});
   if (!diag.empty() || spec.lines.size() != items.size()) return std::nullopt;
-  ScenarioModel model{spreadMooring(spec), {}, {}};
+  ScenarioModel model{spreadMooring(spec), {}, {}, spreadMooringSummary};
   model.origins = originsOf(spec, model.spec, item_lines);
   StepSpec dynamic;
   dynamic.kind = StepSpec::Kind::Dynamic;
   dynamic.name = "dynamic";
   model.steps = {{"statics", spreadMooringStatics(), true}, {"dynamic", dynamic, false}};
   return model;
-}
-
-void addSpreadMooringDefaults(CaseBuilder& b, Fields& top, const ScenarioModel& model) {
-  if (!top.find("summary")) {
-    CaseSpec read = model.spec;  // as the case has it: its ocean, its steps
-    read.ocean = b.ocean;
-    read.steps = b.c.steps;
-    b.c.summary = spreadMooringSummary(read);
-    for (SummarySpec& s : b.c.summary) s.where = {b.diag.file(), 0};
-  }
-  if (!top.find("figure"))
-    b.c.figure = FigureSpec{FigureSpec::Kind::Mooring, {}, "", {b.diag.file(), 0}};
 }
 
 }  // namespace flexmoor::app

@@ -1,4 +1,4 @@
-// The scenarios read into specifications: the reader builds on the case each stands for.
+// The scenarios, and what the reader does with the case each stands for.
 #include "apps/case/scenarios/scenario_model.hpp"
 
 #include "apps/case/case_builder.hpp"
@@ -25,24 +25,24 @@ const char* elementType(ElementSpec::Kind kind) {
   return "";
 }
 
-const SpecScenario kScenarios[] = {
-    {"single_point_moor", singlePointMoorKeys, readSinglePointMoor, addSinglePointMoorDefaults},
-    {"spread_mooring", spreadMooringKeys, readSpreadMooring, addSpreadMooringDefaults},
+const Scenario kScenarios[] = {
+    {"single_point_moor", singlePointMoorKeys, readSinglePointMoor},
+    {"spread_mooring", spreadMooringKeys, readSpreadMooring},
+    {"submerged_tube", submergedTubeKeys, readSubmergedTube},
 };
 
 }  // namespace
 
-const SpecScenario* specScenarioOf(const YAML::Node& root) {
-  if (!root.IsMap() || !root["scenario"] || !root["scenario"].IsScalar()) return nullptr;
-  for (const SpecScenario& s : kScenarios)
-    if (root["scenario"].Scalar() == s.name) return &s;
+const Scenario* scenarioOf(Diagnostics& diag, const YAML::Node& root) {
+  if (!root.IsMap() || !root["scenario"]) return nullptr;
+  const YAML::Node name = root["scenario"];
+  std::string names;
+  for (const Scenario& s : kScenarios) {
+    if (name.IsScalar() && name.Scalar() == s.name) return &s;
+    names += (names.empty() ? "" : " | ") + std::string(s.name);
+  }
+  diag.error(name, "scenario: unknown (got " + describeNode(name) + ", expected " + names + ")");
   return nullptr;
-}
-
-std::vector<std::string> specScenarioNames() {
-  std::vector<std::string> names;
-  for (const SpecScenario& s : kScenarios) names.push_back(s.name);
-  return names;
 }
 
 void addScenarioModel(CaseBuilder& b, const ScenarioModel& model) {
@@ -71,12 +71,26 @@ void addScenarioModel(CaseBuilder& b, const ScenarioModel& model) {
   b.c.rigid_motions = s.rigid_motions;
   b.histories = s.histories;
   b.catenary_starts = s.catenary_starts;
+  b.surfaces = s.surfaces;
+  b.c.element_sets = s.element_sets;
+  // The liquids as read from a case file, resolved with the others once the water is read.
+  for (const EnclosedFluidSpec& f : s.enclosed_fluids) {
+    PendingEnclosedFluid pending;
+    pending.elements = f.elements;
+    pending.density = f.fluid.density;
+    pending.pressure = f.fluid.pressure;
+    pending.at_z = f.fluid.reference_z;
+    pending.line = f.line;
+    pending.where = f.where;
+    b.enclosed_fluids.push_back(std::move(pending));
+  }
 }
 
 void addScenarioOcean(CaseBuilder& b, const ScenarioModel& model, bool seabed_given) {
   const OceanSpec& ocean = model.spec.ocean;
   b.ocean.morison = ocean.morison;
   b.ocean.bodies = ocean.bodies;
+  b.ocean.wave_pressures = ocean.wave_pressures;
   if (seabed_given || !ocean.has_contact) return;
   b.ocean.has_contact = true;
   b.ocean.contact = ocean.contact;
@@ -91,6 +105,29 @@ void readScenarioSteps(CaseBuilder& b, Fields& top, const ScenarioModel& model) 
     const YAML::Node* keys = top.find(step.key);
     if (keys || step.always) readStepOf(b, step.base, keys, step.key, step.base.name);
   }
+}
+
+void addScenarioDefaults(CaseBuilder& b, Fields& top, const ScenarioModel& model) {
+  if (!top.find("summary")) {
+    CaseSpec read = model.spec;  // as the case has it: its ocean, its steps
+    read.ocean = b.ocean;
+    read.steps = b.c.steps;
+    b.c.summary = model.summary(read);
+    for (SummarySpec& s : b.c.summary) s.where = {b.diag.file(), 0};
+  }
+  if (top.find("figure") || !model.spec.figure) return;
+  FigureSpec figure = *model.spec.figure;
+  figure.where = {b.diag.file(), 0};
+  if (figure.kind == FigureSpec::Kind::Series) {
+    std::vector<std::string> written;
+    for (const std::string& series : figure.series) {
+      const auto field = OutputFields::ofVariable(series.substr(0, series.find('@')));
+      if (field && b.c.output.has(*field)) written.push_back(series);
+    }
+    if (written.empty()) return;
+    figure.series = written;
+  }
+  b.c.figure = figure;
 }
 
 }  // namespace flexmoor::app

@@ -94,8 +94,11 @@ std::vector<SummarySpec> singlePointMoorSummary(const CaseSpec& c) {
   const UnitNames units = unitNames(c.units);
   std::vector<SummarySpec> summary = {
       buoySummary(c, "buoy_x", Quantity::Position, 0, units.length),
-      buoySummary(c, "buoy_z", Quantity::Position, 2, units.length),
-      buoySummary(c, "buoy_speed_max", Quantity::Speed, 0, units.length + "/" + units.time)};
+      buoySummary(c, "buoy_z", Quantity::Position, 2, units.length)};
+  // The extremes of a last step that is dynamic.
+  if (c.steps.empty() || c.steps.back().kind != StepSpec::Kind::Dynamic) return summary;
+  summary.push_back(
+      buoySummary(c, "buoy_speed_max", Quantity::Speed, 0, units.length + "/" + units.time));
   summary.back().reduction = SummarySpec::Reduction::Max;
   SummarySpec tension;
   tension.name = "anchor_tension_max";

@@ -7,9 +7,9 @@
 //
 // The line is `cable`, a mooring line from the anchor (cable.start, cable.anchor) along +x,
 // straight at its unstretched length; the buoy is at its end (cable.end, cable.fairlead), a point
-// body with its mass. The default summary: where the buoy ends (buoy_x, buoy_z), its largest
-// speed (buoy_speed_max) and the anchor's largest tension (anchor_tension_max), over the last
-// step; the default figure the four over time.
+// body with its mass. The default summary: where the buoy ends (buoy_x, buoy_z) and, over a last
+// step that is dynamic, its largest speed (buoy_speed_max) and the anchor's largest tension
+// (anchor_tension_max); the default figure the four over time.
 #include <vector>
 
 #include "apps/problem/case_spec.hpp"

@@ -1,257 +1,193 @@
-// scenario: submerged_tube: a fluid-filled membrane tube with a horizontal axis (along y), one
-// layer of Q8 elements between symmetry planes, held under water by a pair of mooring cables
-// from the layer's middle to anchors on the bed, under waves; relaxed to equilibrium, modes, then
-// a dynamic step. The dissertation's Example 9 is one (cases/seed/ex9-submerged-tube.yaml is
-// the same model written out).
-//
-//   scenario: submerged_tube
-//   water: {density, depth}             # required; waves: copied as they are
-//   gravity: 32.174 ft/s^2              # default: standard
-//   tube: {diameter, axis_depth, layer, thickness, E, nu, density, elements: 6}
-//   liquid: {specific_gravity (or density), resultant}   # resultant: liquid minus sea pressure
-//                                                         # at the axis, static
-//   mooring: {attach_angle, angle, area, E, density, elements: 3, order: 3, diameter, Cn, Ct, Ca,
-//             CaAx, tangential_drag_area, per_length}
-//     # attached at 180 deg +- attach_angle from the top (a multiple of 180 deg / elements, so an
-//     # element corner is there), running `angle` from the vertical outwards down to the bed
-//   relax: {...}, modes: {count: 6, ...}, dynamic: {...}   # the steps' keys (dynamic required)
-//   summary:, figure:                   # default: periods 1-6, node 1's largest x, node 7's
-//                                       # largest z, the largest mooring tension; a figure of
-//                                       # nodes 1, 7, 4, 10 and the first cable's tension
-//
-// Node names: the cables are mooring lines mooring_right and mooring_left (anchor: end: their .end,
-// .anchor, on the bed; their .start, .fairlead, at the tube), the
-// membrane the surface tube; nodes 1, 4, 7, 10 of the dissertation (top, right, bottom, left on
-// the ring y = 0) by position.
-#include <cmath>
+#include "apps/case/scenarios/submerged_tube.hpp"
 
-#include "apps/case/input/units.hpp"
-#include "apps/case/input/yaml_input.hpp"
-#include "apps/case/scenarios/scenario.hpp"
-#include "apps/case/scenarios/yaml_text.hpp"
-#include "apps/common/format_number.hpp"
+#include <array>
+#include <cmath>
+#include <memory>
+
+#include "apps/case/build/surface_mesh.hpp"
+#include "apps/problem/unit_system.hpp"
+#include "libstruct/material/cable_material.hpp"
 
 namespace flexmoor::app {
 namespace {
 
 const double kPi = std::acos(-1.0);
 
-YAML::Node point(double x, double y, double z) {
-  YAML::Node n(YAML::NodeType::Sequence);
-  for (double v : {x, y, z}) n.push_back(scenarioNumber(v));
-  n.SetStyle(YAML::EmitterStyle::Flow);
-  return n;
+// The tube's centre and radius, and where the cables are attached and anchored.
+struct TubeGeometry {
+  double radius, zc, za, xa, run;
+};
+
+TubeGeometry geometryOf(const SubmergedTubeSpec& s) {
+  TubeGeometry t;
+  t.radius = s.diameter / 2.0;
+  t.zc = -s.axis_depth;
+  t.za = t.zc - t.radius * std::cos(s.attach_angle);
+  t.xa = t.radius * std::sin(s.attach_angle);
+  t.run = (t.za + s.water.depth) * std::tan(s.angle);
+  return t;
 }
 
-YAML::Node at(double x, double y, double z) {
-  YAML::Node n;
-  n["at"] = point(x, y, z);
-  return n;
+// The node at a point of the tube's ring y = 0 (the mesh has one there: its corners).
+int nodeAt(const MeshSpec& mesh, const Eigen::Vector3d& x) {
+  int nearest = -1;
+  double distance = 0.0;
+  for (int n = 0; n < mesh.nodeCount(); ++n) {
+    const double d = (mesh.position(n) - x).norm();
+    if (nearest < 0 || d < distance) nearest = n, distance = d;
+  }
+  return distance <= mesh.positionTolerance() ? nearest : -1;
+}
+
+// The top, bottom, right and left of the ring y = 0: the dissertation's nodes 1, 7, 4 and 10.
+std::array<int, 4> ringNodes(const CaseSpec& c, const SubmergedTubeSpec& spec) {
+  const TubeGeometry t = geometryOf(spec);
+  return {nodeAt(c.mesh, {0.0, 0.0, t.zc + t.radius}), nodeAt(c.mesh, {0.0, 0.0, t.zc - t.radius}),
+          nodeAt(c.mesh, {t.radius, 0.0, t.zc}), nodeAt(c.mesh, {-t.radius, 0.0, t.zc})};
 }
 
 }  // namespace
 
-YAML::Node expandSubmergedTube(Diagnostics& diag, const YAML::Node& root) {
-  const UnitSystem units = scenarioUnits(root);
-  Input in(diag, units);
-  std::vector<std::string> allowed = {"name",    "title", "units",   "scenario", "water", "waves",
-                                      "gravity", "tube",  "liquid",  "mooring",  "relax", "modes",
-                                      "dynamic", "steps", "summary", "figure",   "output"};
-  allowed.insert(allowed.end(), scenarioGeneratedKeys().begin(), scenarioGeneratedKeys().end());
-  Fields top(diag, root, "", allowed);
-  refuseGeneratedKeys(diag, top, "submerged_tube", "tube:, liquid:, mooring:");
-  const ScenarioWater water = readScenarioWater(in, top, units);
-  const double rho = water.density, depth = water.depth, g = water.gravity;
-  const auto need = [&](Fields& f, const char* key, const QuantityKind& kind) {
-    const YAML::Node* n = f.require(key);
-    return n ? in.quantity(*n, f.path(key), kind, Limit::Positive) : std::nullopt;
-  };
+CaseSpec submergedTube(const SubmergedTubeSpec& spec, std::vector<StepSpec> steps) {
+  CaseSpec c;
+  c.units = spec.units;
+  const TubeGeometry t = geometryOf(spec);
+  const double depth = spec.water.depth, g = spec.water.gravity;
 
-  const YAML::Node* tube_node = top.require("tube");
-  Fields tube(diag, tube_node ? *tube_node : YAML::Node(), "tube",
-              {"diameter", "axis_depth", "layer", "thickness", "E", "nu", "density", "elements"});
-  const auto diameter = need(tube, "diameter", kind::kLength);
-  const auto axis_depth = need(tube, "axis_depth", kind::kLength);
-  const auto layer = need(tube, "layer", kind::kLength);
-  for (const char* key : {"thickness", "E", "nu", "density"}) tube.require(key);
-  const int around = in.integerOr(tube, "elements", 3, 6);
-
-  const YAML::Node* liquid_node = top.require("liquid");
-  Fields liquid(diag, liquid_node ? *liquid_node : YAML::Node(), "liquid",
-                {"specific_gravity", "density", "resultant"});
-  const auto resultant = [&]() -> std::optional<double> {
-    const YAML::Node* n = liquid.require("resultant");
-    return n ? in.quantity(*n, liquid.path("resultant"), kind::kPressure) : std::nullopt;
-  }();
-
-  const YAML::Node* mooring_node = top.require("mooring");
-  Fields mooring(diag, mooring_node ? *mooring_node : YAML::Node(), "mooring",
-                 {"attach_angle", "angle", "area", "E", "density", "elements", "order", "diameter",
-                  "Cn", "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length"});
-  const auto attach = need(mooring, "attach_angle", kind::kNumber);
-  const auto angle = need(mooring, "angle", kind::kNumber);
-  for (const char* key : {"density", "diameter", "Cn", "Ca"}) mooring.require(key);
-  const auto area = need(mooring, "area", kind::kArea);
-  const auto youngs = need(mooring, "E", kind::kPressure);
-  const int elements = in.integerOr(mooring, "elements", 1, 3);
-  const int order = in.integerOr(mooring, "order", 2, 3);
-  // The attachment must be an element corner: the mesh starts at 180 deg - attach_angle.
-  const double pitch = kPi / around;
-  if (attach && std::abs(*attach / pitch - std::round(*attach / pitch)) > 1e-9)
-    diag.error(mooring.keyLine("attach_angle"),
-               "mooring.attach_angle: not at an element corner (got " +
-                   formatNumber(*attach * 180.0 / kPi) + " deg, expected a multiple of 180 deg / " +
-                   std::to_string(around) + " = " + formatNumber(180.0 / around) + " deg)");
-  if (angle && !(*angle < kPi / 2.0))
-    diag.error(mooring.keyLine("angle"), "mooring.angle: the cable would not reach the bed (got " +
-                                             formatNumber(*angle * 180.0 / kPi) +
-                                             " deg from the vertical, expected less "
-                                             "than 90 deg)");
-  const YAML::Node* steps = top.find("steps");
-  const YAML::Node* dynamic = steps ? top.find("dynamic") : top.require("dynamic");
-  if (!diag.empty() || !diameter || !axis_depth || !layer || !resultant || !attach || !angle ||
-      !area || !youngs || !(dynamic || steps) || !(rho > 0.0) || !(depth > 0.0))
-    return root;
-  const double R = *diameter / 2.0, zc = -*axis_depth;
-  const double za = zc - R * std::cos(*attach), xa = R * std::sin(*attach);
-  if (za <= -depth) {
-    diag.error(tube.keyLine("axis_depth"),
-               "tube.axis_depth: the mooring's attachment is at or below the bed (got z = " +
-                   formatNumber(za) + ", expected above -" + formatNumber(depth) + ")");
-    return root;
-  }
-  const double run = (za + depth) * std::tan(*angle);
-
-  YAML::Node doc(YAML::NodeType::Map);
-  for (const auto& key :
-       {"name", "title", "units", "water", "waves", "summary", "figure", "output"})
-    if (const YAML::Node* n = top.find(key)) doc[key] = *n;
-  doc["materials"]["skin"]["type"] = "linear_elastic";
-  doc["materials"]["skin"]["E"] = *tube.find("E");
-  doc["materials"]["skin"]["nu"] = *tube.find("nu");
-  doc["materials"]["rope"]["type"] = "linear_elastic";
-  doc["materials"]["rope"]["E"] = *mooring.find("E");
-  doc["sections"]["wall"]["material"] = "skin";
-  doc["sections"]["wall"]["thickness"] = *tube.find("thickness");
-  doc["sections"]["wall"]["density"] = *tube.find("density");
-  YAML::Node section, hydro;
-  section["material"] = "rope";
-  section["area"] = *mooring.find("area");
-  section["density"] = *mooring.find("density");
-  for (const char* key :
-       {"diameter", "Cn", "Ct", "Ca", "CaAx", "tangential_drag_area", "per_length"})
-    if (const YAML::Node* n = mooring.find(key)) hydro[key] = *n;
-  section["hydro"] = hydro;
-  doc["sections"]["mooring"] = section;
+  // The cables, from their attachments at the tube down to the bed.
+  std::vector<CaseLine> lines;
   for (const double side : {1.0, -1.0}) {
-    YAML::Node line;
-    line["name"] = side > 0.0 ? "mooring_right" : "mooring_left";
-    line["from"] = point(side * xa, *layer / 2.0, za);
-    line["to"] = point(side * (xa + run), *layer / 2.0, -depth);
-    line["elements"] = elements;
-    line["order"] = order;
-    line["section"] = "mooring";
-    line["anchor"] = "end";  // on the bed: mooring_right.anchor, its fairlead at the tube
-    doc["lines"].push_back(line);
-  }
-  YAML::Node surface;
-  surface["name"] = "tube";
-  surface["shape"] = "cylinder";
-  surface["axis"] = "y";
-  surface["centre"] = point(0.0, 0.0, zc);
-  surface["radius"] = scenarioNumber(R);
-  surface["length"] = scenarioNumber(*layer);
-  YAML::Node angles(YAML::NodeType::Sequence);  // radians, a corner at 180 deg - attach_angle
-  angles.push_back(scenarioNumber(kPi - *attach));
-  angles.push_back(scenarioNumber(3.0 * kPi - *attach));
-  angles.SetStyle(YAML::EmitterStyle::Flow);
-  surface["angles"] = angles;
-  YAML::Node divisions(YAML::NodeType::Sequence);
-  divisions.push_back(around);
-  divisions.push_back(1);
-  surface["divisions"] = divisions;
-  surface["element"] = "Q8";
-  surface["section"] = "wall";
-  doc["surfaces"].push_back(surface);
-  YAML::Node symmetry, anchors;
-  symmetry["nodes"] = "all";
-  symmetry["fix"].push_back("y");
-  anchors["nodes"].push_back("mooring_right.end");
-  anchors["nodes"].push_back("mooring_left.end");
-  anchors["fix"].push_back("x");
-  anchors["fix"].push_back("z");
-  doc["supports"].push_back(symmetry);
-  doc["supports"].push_back(anchors);
-  doc["loads"]["gravity"]["g"] = scenarioNumber(g);
-  YAML::Node sea, fluid;
-  sea["on"] = "tube";
-  sea["water_side"] = "positive";
-  doc["loads"]["wave_pressure"].push_back(sea);
-  fluid["on"] = "tube";
-  for (const char* key : {"specific_gravity", "density"})
-    if (const YAML::Node* n = liquid.find(key)) fluid[key] = *n;
-  fluid["pressure"] =
-      scenarioNumber(*resultant + rho * g * *axis_depth);  // sea's at the axis + resultant
-  fluid["at_z"] = scenarioNumber(zc);
-  doc["loads"]["enclosed_fluid"].push_back(fluid);
-
-  if (!top.find("summary")) {
-    for (int k = 1; k <= 6 && k <= 3 * around; ++k) {
-      YAML::Node p;
-      p["quantity"] = "period";
-      p["mode"] = k;
-      p["step"] = "modes";
-      doc["summary"]["period_" + std::to_string(k)] = p;
+    CaseLine line{side > 0.0 ? "mooring_right" : "mooring_left", {}, {}, "", CaseLine::Anchor::End};
+    const Eigen::Vector3d from(side * t.xa, spec.layer / 2.0, t.za);
+    const Eigen::Vector3d to(side * (t.xa + t.run), spec.layer / 2.0, -depth);
+    const int count = spec.elements * (spec.order - 1) + 1;
+    for (int k = 0; k < count; ++k) {
+      const double s = static_cast<double>(k) / (count - 1);
+      line.nodes.push_back(c.mesh.addNode((1.0 - s) * from + s * to));
     }
-    YAML::Node x1, z7, t;
-    x1["quantity"] = "displacement_x";
-    x1["node"] = at(0.0, 0.0, zc + R);
-    x1["stat"] = "max";
-    z7["quantity"] = "displacement_z";
-    z7["node"] = at(0.0, 0.0, zc - R);
-    z7["stat"] = "max";
-    t["quantity"] = "max_tension";
-    t["stat"] = "max";
-    doc["summary"]["node1_x_max"] = x1;
-    doc["summary"]["node7_z_max"] = z7;
-    doc["summary"]["mooring_tension_max"] = t;
+    lines.push_back(line);
   }
-  if (!top.find("figure")) {
-    const double ring[4][2] = {{0.0, zc + R}, {0.0, zc - R}, {R, zc}, {-R, zc}};
-    std::vector<YAML::Node> series;
-    for (const auto& p : ring)
-      for (const char* q : {"displacement_x", "displacement_z"})
-        series.push_back(nodeSeries(q, at(p[0], 0.0, p[1])));
-    series.push_back(firstElementTensionSeries());
-    if (const YAML::Node figure = defaultFigure(top, series); figure.IsMap())
-      doc["figure"] = figure;
+  // The tube: one layer of Q8 elements, a corner at 180 deg - attach_angle (its nodes merged
+  // with the cables' at their attachments).
+  SectionSpec wall;
+  wall.is_membrane = true;
+  wall.membrane = spec.wall;
+  SurfaceSpec surface;
+  surface.name = "tube";
+  surface.map.shape = SurfaceShape::Cylinder;
+  surface.map.axis = 1;
+  surface.map.origin = Eigen::Vector3d(0.0, 0.0, t.zc);
+  surface.map.radius = t.radius;
+  surface.map.length = spec.layer;
+  surface.map.theta0 = kPi - spec.attach_angle;
+  surface.map.theta1 = 3.0 * kPi - spec.attach_angle;
+  surface.kind = {false, 8, 2};
+  surface.divisions = {spec.around, 1};
+  surface.section = &wall;
+  SurfaceElements tube = meshSurface(c.mesh.reference, surface, {},
+                                     [&](const Eigen::Vector3d& x) { return c.mesh.addNode(x); });
+  for (CaseLine& line : lines)
+    for (int e = 0; e < spec.elements; ++e) {
+      const auto first = line.nodes.begin() + e * (spec.order - 1);
+      line.elements.push_back(c.mesh.addElement(
+          ElementSpec::cable(std::vector<int>(first, first + spec.order), spec.rope, 0)));
+    }
+  std::vector<int> membranes;
+  for (SurfaceElements::Generated& e : tube.elements)
+    membranes.push_back(c.mesh.addElement(std::move(e.element)));
+  c.surfaces["tube"] = tube.nodes;
+  c.element_sets["tube"] = membranes;
+
+  // The symmetry planes, the anchors; gravity.
+  for (int node = 0; node < c.mesh.nodeCount(); ++node)
+    c.conditions.supports.push_back({node, 1, 0.0, nullptr, 0});
+  for (const CaseLine& line : lines)
+    for (const int k : {0, 2})
+      c.conditions.supports.push_back({line.nodes.back(), k, 0.0, nullptr, 0});
+  c.conditions.gravity = Eigen::Vector3d(0.0, 0.0, -g);
+
+  // The water: the cables' Morison loads, the waves' pressure on the tube; the liquid inside at
+  // the sea's pressure at the axis plus the resultant.
+  c.ocean = OceanSpec::inWater(spec.water);
+  MorisonSpec morison{{}, spec.hydro};
+  for (const CaseLine& line : lines)
+    morison.elements.insert(morison.elements.end(), line.elements.begin(), line.elements.end());
+  c.ocean.morison.push_back(morison);
+  c.ocean.wave_pressures.push_back({membranes, hydro::WaterSide::Positive, 0, "tube"});
+  const double pressure = spec.resultant + spec.water.density * g * spec.axis_depth;
+  c.enclosed_fluids.push_back(
+      {membranes, hydro::EnclosedFluid{spec.liquid_density, pressure, t.zc, g}, 0, "liquid"});
+  c.lines = lines;
+  c.steps = std::move(steps);
+  c.summary = submergedTubeSummary(c, spec);
+  c.figure = submergedTubeFigure(c, spec);
+  return c;
+}
+
+StepSpec submergedTubeEquilibrium(const SubmergedTubeSpec& spec) {
+  const TubeGeometry t = geometryOf(spec);
+  const double length = std::hypot(t.run, t.za + spec.water.depth);
+  const double ea = spec.rope.material->initialModulus() * spec.rope.area;
+  StepSpec relax;
+  relax.kind = StepSpec::Kind::Relax;
+  relax.name = "equilibrium";
+  relax.relax.tolerance = 1e-6;
+  relax.relax.damping = std::pow(10.0, std::round(std::log10(2.0 * ea / length)));
+  return relax;
+}
+
+StepSpec submergedTubeModes() {
+  StepSpec modes;
+  modes.kind = StepSpec::Kind::Modes;
+  modes.name = "modes";
+  modes.modes.modes = 6;
+  return modes;
+}
+
+std::vector<SummarySpec> submergedTubeSummary(const CaseSpec& c, const SubmergedTubeSpec& spec) {
+  using Quantity = SummarySpec::Quantity;
+  const UnitNames units = unitNames(c.units);
+  std::vector<SummarySpec> summary;
+  const auto add = [&](const std::string& name, Quantity q, const std::string& unit) {
+    SummarySpec s;
+    s.name = name;
+    s.quantity = q;
+    s.unit = unit;
+    summary.push_back(s);
+    return &summary.back();
+  };
+  // The periods of the step `modes`, as many as it has, up to 6 and to the tube's 3 an element.
+  for (size_t i = 0; i < c.steps.size(); ++i) {
+    const StepSpec& step = c.steps[i];
+    if (step.kind != StepSpec::Kind::Modes || step.name != "modes") continue;
+    for (int k = 1; k <= 6 && k <= 3 * spec.around && k <= step.modes.modes; ++k) {
+      SummarySpec* s = add("period_" + std::to_string(k), Quantity::Period, units.time);
+      s->mode = k;
+      s->step = static_cast<int>(i);
+    }
+    break;
   }
-  if (steps) {
-    doc["steps"] = *steps;
-    return doc;
-  }
-  // Equilibrium by viscous relaxation (Newton from the unstressed membrane has a singular
-  // tangent: its ovalling is free), with a damping constant of about twice a cable's axial
-  // stiffness EA / l, rounded to a power of ten.
-  YAML::Node relax, modes, waves = *dynamic;
-  relax["name"] = "equilibrium";
-  relax["tolerance"] = "1e-6";
-  const double length = std::hypot(run, za + depth);
-  relax["damping"] =
-      scenarioNumber(std::pow(10.0, std::round(std::log10(2.0 * *youngs * *area / length))));
-  if (const YAML::Node* r = top.find("relax"))
-    for (const auto& kv : *r) relax[kv.first.Scalar()] = kv.second;
-  modes["name"] = "modes";
-  modes["count"] = 6;
-  if (const YAML::Node* m = top.find("modes"))
-    for (const auto& kv : *m) modes[kv.first.Scalar()] = kv.second;
-  waves["name"] = "waves";
-  YAML::Node s1, s2, s3;
-  s1["relax"] = relax;
-  s2["modes"] = modes;
-  s3["dynamic"] = waves;
-  for (const YAML::Node& s : {s1, s2, s3}) doc["steps"].push_back(s);
-  return doc;
+  if (c.steps.empty() || c.steps.back().kind != StepSpec::Kind::Dynamic) return summary;
+  const std::array<int, 4> ring = ringNodes(c, spec);
+  SummarySpec* x1 = add("node1_x_max", Quantity::Displacement, units.length);
+  x1->node = ring[0];
+  x1->reduction = SummarySpec::Reduction::Max;
+  SummarySpec* z7 = add("node7_z_max", Quantity::Displacement, units.length);
+  z7->node = ring[1];
+  z7->component = 2;
+  z7->reduction = SummarySpec::Reduction::Max;
+  add("mooring_tension_max", Quantity::MaxTension, units.force)->reduction =
+      SummarySpec::Reduction::Max;
+  return summary;
+}
+
+FigureSpec submergedTubeFigure(const CaseSpec& c, const SubmergedTubeSpec& spec) {
+  FigureSpec figure;
+  for (const int node : ringNodes(c, spec))
+    for (const char* q : {"displacement_x", "displacement_z"})
+      figure.series.push_back(FigureSpec::nodeSeries(q, node));
+  figure.series.push_back(FigureSpec::tensionSeries(0, 0));  // the first cable element's
+  return figure;
 }
 
 }  // namespace flexmoor::app

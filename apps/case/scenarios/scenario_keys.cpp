@@ -1,4 +1,4 @@
-#include "apps/case/scenarios/yaml_text.hpp"
+#include "apps/case/scenarios/scenario_keys.hpp"
 
 #include <sstream>
 
@@ -7,60 +7,11 @@
 
 namespace flexmoor::app {
 
-std::string scenarioNumber(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
-
-YAML::Node flowSequence(std::initializer_list<std::string> items) {
-  YAML::Node n(YAML::NodeType::Sequence);
-  for (const std::string& i : items) n.push_back(i);
-  return n;
-}
-
-UnitSystem scenarioUnits(const YAML::Node& root) {
-  const YAML::Node u = root["units"];
-  return u && u.IsScalar() && u.Scalar() == "US" ? UnitSystem::US : UnitSystem::SI;
-}
-
 const std::vector<std::string>& scenarioGeneratedKeys() {
   static const std::vector<std::string> keys = {"materials", "sections", "nodes",  "lines",
                                                 "surfaces",  "elements", "bodies", "supports",
                                                 "loads",     "node_sets"};
   return keys;
-}
-
-YAML::Node nodeSeries(const std::string& quantity, const YAML::Node& node) {
-  YAML::Node n;
-  n["quantity"] = quantity;
-  n["node"] = node;
-  return n;
-}
-
-YAML::Node firstElementTensionSeries() {
-  YAML::Node tension;
-  tension["quantity"] = "tension_end";
-  tension["element"] = 1;
-  tension["end"] = 1;
-  return tension;
-}
-
-YAML::Node defaultFigure(const Fields& top, const std::vector<YAML::Node>& series) {
-  const YAML::Node* output = top.find("output");
-  const YAML::Node listed = output && output->IsMap() ? (*output)["fields"] : YAML::Node();
-  const auto written = [&](const std::string& quantity) {
-    if (!listed.IsSequence()) return true;
-    const auto field = OutputFields::ofVariable(quantity);
-    for (const YAML::Node& name : listed)
-      if (field && name.IsScalar() && name.Scalar() == OutputFields::name(*field)) return true;
-    return false;
-  };
-  YAML::Node figure;
-  for (const YAML::Node& s : series)
-    if (written(s["quantity"].as<std::string>())) figure["series"].push_back(s);
-  return figure;
 }
 
 void refuseGeneratedKeys(Diagnostics& diag, const Fields& top, const std::string& scenario,
