@@ -27,20 +27,12 @@
 #include "apps/problem/conditions_spec.hpp"
 #include "apps/problem/mesh_spec.hpp"
 #include "apps/problem/ocean_spec.hpp"
+#include "apps/problem/section_spec.hpp"
 #include "libhydro/loads/enclosed_fluid.hpp"
 #include "libstruct/element/cable_element.hpp"
 #include "libstruct/element/membrane_element.hpp"
 
 namespace flexmoor::app {
-
-struct SectionSpec {
-  element::CableSection section;
-  int quadrature = 0;  // Gauss points per element; 0 = as many as the element has nodes
-  // A membrane section (`thickness:` instead of `area:`); quadrature 0 = the element's default.
-  bool is_membrane = false;
-  element::MembraneSection membrane;
-  std::optional<LineHydroSpec> hydro;  // `hydro:`: Morison loads on the lines of this section
-};
 
 // What a section is asked for: cable-like elements (cables, hoop cables) or membranes.
 enum class SectionUse { Cable, Membrane };

@@ -202,20 +202,4 @@ SurfaceElements meshSurface(const model::NodalField& reference, const SurfaceSpe
   return out;
 }
 
-void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<CableRow>& rows,
-                     int line) {
-  SurfaceElements mesh = meshSurface(b.mesh.reference, s, rows, [&](const Eigen::Vector3d& x) {
-    return b.addGeneratedNode(x, line);
-  });
-  if (s.map.shape == SurfaceShape::Meridian)
-    for (int node : mesh.nodes)  // y carries nothing
-      b.conditions.supports.push_back({node, 1, 0.0, nullptr, 0});
-  PendingSurface pending{s.name, line, {}};
-  for (SurfaceElements::Generated& e : mesh.elements)
-    pending.elements.push_back(
-        {e.type, b.sectionName(e.row_section ? e.row_section : s.section), std::move(e.element)});
-  b.surfaces[s.name] = std::move(mesh.nodes);
-  b.surface_elements.push_back(std::move(pending));
-}
-
 }  // namespace flexmoor::app

@@ -1,5 +1,5 @@
 #pragma once
-// The membrane meshes a case file's surfaces: generate (read_surfaces.cpp reads them). Each surface
+// The membrane meshes of surfaces (a case file's surfaces:, read_surfaces.cpp; a scenario's tube). Each surface
 // maps the unit square of parameters (s, t) onto
 //   rectangle  corner + s side1 + t side2
 //   cylinder   centre + (R cos theta, R sin theta, t length), theta from angles[0] to angles[1],
@@ -21,7 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "apps/case/case_builder.hpp"
+#include "apps/problem/mesh_spec.hpp"
+#include "apps/problem/section_spec.hpp"
 
 namespace flexmoor::app {
 
@@ -84,10 +85,5 @@ struct SurfaceElements {
 SurfaceElements meshSurface(const model::NodalField& reference, const SurfaceSpec& s,
                             const std::vector<CableRow>& rows,
                             const std::function<int(const Eigen::Vector3d&)>& add_node);
-
-// Adds the surface's nodes (merged with existing ones), its membrane elements, cell by cell, then
-// the cables of each row, as a PendingSurface of the builder, and records its nodes by name.
-void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<CableRow>& rows,
-                     int line);
 
 }  // namespace flexmoor::app

@@ -1,12 +1,31 @@
 // surfaces: of a case file: each item's shape, geometry, element kind, divisions, section and
-// cables, checked and handed to generateSurface (surface_mesh.hpp, which describes the shapes).
+// cables, checked and meshed by meshSurface (surface_mesh.hpp, which describes the shapes).
 #include <Eigen/Geometry>
 #include <cmath>
 
 #include "apps/case/build/surface_mesh.hpp"
+#include "apps/case/case_builder.hpp"
 
 namespace flexmoor::app {
 namespace {
+
+// Adds the surface's nodes (merged with existing ones), its membrane elements, cell by cell, then
+// the cables of each row, as a PendingSurface of the builder, and records its nodes by name.
+void generateSurface(CaseBuilder& b, const SurfaceSpec& s, const std::vector<CableRow>& rows,
+                     int line) {
+  SurfaceElements mesh = meshSurface(b.mesh.reference, s, rows, [&](const Eigen::Vector3d& x) {
+    return b.addGeneratedNode(x, line);
+  });
+  if (s.map.shape == SurfaceShape::Meridian)
+    for (int node : mesh.nodes)  // y carries nothing
+      b.conditions.supports.push_back({node, 1, 0.0, nullptr, 0});
+  PendingSurface pending{s.name, line, {}};
+  for (SurfaceElements::Generated& e : mesh.elements)
+    pending.elements.push_back(
+        {e.type, b.sectionName(e.row_section ? e.row_section : s.section), std::move(e.element)});
+  b.surfaces[s.name] = std::move(mesh.nodes);
+  b.surface_elements.push_back(std::move(pending));
+}
 
 const std::vector<std::pair<std::string, ElementKind>>& elementKinds() {
   static const std::vector<std::pair<std::string, ElementKind>> kinds = {
