@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "apps/case/case_builder.hpp"
+#include "apps/case/input/physical_range.hpp"
 #include "apps/case/input/units.hpp"
 #include "apps/common/format_number.hpp"
 #include "libhydro/mooring/catenary_line.hpp"
@@ -116,6 +117,13 @@ std::optional<LineType> readLineType(CaseBuilder& b, const MapEntry& e, double r
   const auto ea = need("EA", kind::kForce);
   if (!d || !m || !ea) return std::nullopt;
   const double area = kPi * *d * *d / 4.0;
+  // Its section's density, the mass per length over the area pi d^2 / 4.
+  if (!inPhysicalRange(in, *f.find("mass_per_length"), f.path("mass_per_length"), *m / area,
+                       kSectionDensityRange,
+                       "a density of " + formatNumber(*m / area) + " " +
+                           (in.units == UnitSystem::US ? "slug/ft^3" : "kg/m^3") +
+                           " over the area pi d^2 / 4"))
+    return std::nullopt;
   if (const YAML::Node* n = f.find("weight_in_water")) {
     const auto w = in.quantity(*n, f.path("weight_in_water"), kWeightPerLength);
     const double expected = (*m - rho * area) * g;
