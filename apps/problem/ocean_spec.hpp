@@ -105,6 +105,15 @@ struct OceanSpec {
   std::vector<WavePressureSpec> wave_pressures;  // read with loads: (read_conditions.cpp)
   std::vector<MorisonSpec> morison;              // an element in one of them at most
 
+  // The Morison coefficients of each of `elements` elements, null for none; std::out_of_range
+  // for Morison loads on an element beyond them.
+  std::vector<const LineHydroSpec*> elementHydro(int elements) const {
+    std::vector<const LineHydroSpec*> hydro(elements, nullptr);
+    for (const MorisonSpec& m : morison)
+      for (const int e : m.elements) hydro.at(e) = &m.hydro;
+    return hydro;
+  }
+
   // Still water with its bed flat at -depth: the start of an ocean stated in code.
   static OceanSpec inWater(const hydro::Water& water) {
     OceanSpec spec;

@@ -2,8 +2,6 @@
 
 #include <cmath>
 #include <memory>
-#include <stdexcept>
-#include <string>
 
 #include "libhydro/loads/body_node_load.hpp"
 #include "libhydro/loads/morison_line_load.hpp"
@@ -65,20 +63,6 @@ std::shared_ptr<const hydro::Sea> makeSea(const OceanSpec& h, SeaOrigin& origin)
   return sea;
 }
 
-// The Morison coefficients of each model element, null for none.
-std::vector<const LineHydroSpec*> elementHydro(const OceanSpec& h, const model::Model& m) {
-  std::vector<const LineHydroSpec*> hydro(m.elementCount(), nullptr);
-  for (const MorisonSpec& morison : h.morison)
-    for (const int e : morison.elements) {
-      if (e < 0 || e >= m.elementCount())
-        throw std::invalid_argument("Morison loads on element " + std::to_string(e) +
-                                    ", which is not in the mesh (" +
-                                    std::to_string(m.elementCount()) + " elements, 0-based)");
-      hydro[e] = &morison.hydro;
-    }
-  return hydro;
-}
-
 void addMorisonLoads(const OceanSpec& h, model::Model& m,
                      const std::shared_ptr<const hydro::Sea>& sea,
                      const std::vector<const LineHydroSpec*>& hydro) {
@@ -105,7 +89,7 @@ void addMorisonLoads(const OceanSpec& h, model::Model& m,
 void buildOcean(const OceanSpec& h, Case& c) {
   if (!h.has_water) return;
   model::Model& m = *c.model;
-  const std::vector<const LineHydroSpec*> hydro = elementHydro(h, m);
+  const std::vector<const LineHydroSpec*> hydro = h.elementHydro(m.elementCount());
   SeaOrigin origin;
   const std::shared_ptr<const hydro::Sea> sea = makeSea(h, origin);
   c.sea = sea;

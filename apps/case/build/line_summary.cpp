@@ -1,25 +1,20 @@
 #include "apps/case/build/line_summary.hpp"
 
-#include <map>
-
 #include "apps/case/build/build_initial_shape.hpp"
 
 namespace flexmoor::app {
 
 int seabedLine(const CaseLine& line, const MeshSpec& mesh, const ConditionsSpec& held,
                const OceanSpec& ocean, SummarySpec& s) {
-  std::map<int, double> diameters;  // of the elements with Morison loads
-  for (const MorisonSpec& m : ocean.morison)
-    for (const int e : m.elements) diameters[e] = m.hydro.coefficients.diameter;
+  const std::vector<const LineHydroSpec*> hydro = ocean.elementHydro(mesh.elementCount());
   s.quantity = SummarySpec::Quantity::LengthOnSeabed;
   s.elements = line.elements;
   s.element_weights.clear();
   const double g = held.gravityVector().norm();
   for (size_t i = 0; i < line.elements.size(); ++i) {
     const int e = line.elements[i];
-    const auto d = diameters.find(e);
     const double w = submergedWeightPerLength(ocean, g, mesh.elements[e].cable_section,
-                                              d == diameters.end() ? 0.0 : d->second);
+                                              hydro[e] ? hydro[e]->coefficients.diameter : 0.0);
     s.element_weights.push_back(w);
     if (!(w > 0.0)) return static_cast<int>(i);
   }

@@ -427,9 +427,7 @@ void checkSeabed(const CheckedModel& k) {
 // Morison loads and axial damping act on cable elements along their axis; a hoop ring, a membrane,
 // a spring or a point mass has none.
 void checkLineLoads(const CheckedModel& k) {
-  std::vector<bool> morison(k.mesh.elementCount(), false);
-  for (const MorisonSpec& m : k.ocean.morison)
-    for (const int e : m.elements) morison[e] = true;
+  const std::vector<const LineHydroSpec*> morison = k.ocean.elementHydro(k.mesh.elementCount());
   for (int e = 0; e < k.mesh.elementCount(); ++e) {
     const ElementSpec& element = k.mesh.elements[e];
     if (element.kind == ElementSpec::Kind::Cable) continue;

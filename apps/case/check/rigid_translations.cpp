@@ -56,17 +56,14 @@ std::map<int, VerticalLoads> verticalLoads(const CheckedModel& k, const std::vec
   const double buoyancy = h.has_water ? h.water.density * h.water.gravity : 0.0;  // per volume
   const model::State state = k.model().initialState();
   Eigen::MatrixXd M;
-  // The diameter of the elements with Morison loads (of the mesh: not the liquids' masses).
-  std::vector<double> diameters(k.model().elementCount(), 0.0);
-  for (const MorisonSpec& m : h.morison)
-    for (const int e : m.elements) diameters[e] = m.hydro.coefficients.diameter;
+  const std::vector<const LineHydroSpec*> hydro = h.elementHydro(k.model().elementCount());
   for (int e = 0; e < k.model().elementCount(); ++e) {
     const int r = root[k.model().element(e).nodes().front()];
     if (!of.count(r)) continue;  // a point mass off every group, or a group held vertically
     VerticalLoads& v = loads[r];
     v.upward += weighingMass(k, e, state, M) * g_z;
-    const double d = diameters[e];
-    if (!(d > 0.0) || k.mesh.elements[e].kind != ElementSpec::Kind::Cable || !h.has_water) continue;
+    if (!hydro[e] || k.mesh.elements[e].kind != ElementSpec::Kind::Cable || !h.has_water) continue;
+    const double d = hydro[e]->coefficients.diameter;
     v.upward += buoyancy * M_PI * d * d / 4.0 * referenceLength(k, e);
     v.floats = true;  // a point above the surface carries no buoyancy
     v.touches_bed = v.touches_bed || h.has_contact;
