@@ -121,6 +121,16 @@ struct MeshSpec {
   int elementCount() const { return static_cast<int>(elements.size()); }
   const std::vector<int>& elementNodes(int element) const { return elements[element].nodes; }
   double positionTolerance() const { return app::positionTolerance(reference); }
+  // The node nearest x (-1 when there is none) and its distance from it.
+  std::pair<int, double> nearestNode(const Eigen::Vector3d& x) const {
+    int nearest = -1;
+    double distance = 0.0;
+    for (int node = 0; node < nodeCount(); ++node) {
+      const double d = (position(node) - x).norm();
+      if (nearest < 0 || d < distance) nearest = node, distance = d;
+    }
+    return {nearest, distance};
+  }
 };
 
 }  // namespace flexmoor::app

@@ -39,12 +39,7 @@ std::optional<int> nodeAt(CaseBuilder& b, const YAML::Node& n, const std::string
   const YAML::Node* at = f.require("at");
   const auto x = at ? b.in.vector3(*at, f.path("at"), kind::kLength) : std::nullopt;
   if (!x) return std::nullopt;
-  int nearest = -1;
-  double distance = 0.0;
-  for (int node = 0; node < b.mesh.nodeCount(); ++node) {
-    const double d = (b.mesh.position(node) - *x).norm();
-    if (nearest < 0 || d < distance) std::tie(nearest, distance) = std::pair(node, d);
-  }
+  const auto [nearest, distance] = b.mesh.nearestNode(*x);
   if (nearest >= 0 && distance <= b.mesh.positionTolerance()) return nearest;
   b.diag.error(*at,
                f.path("at") + ": no node there (got " + describeNode(*at) + ", expected " +

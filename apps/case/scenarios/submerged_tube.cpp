@@ -30,12 +30,7 @@ TubeGeometry geometryOf(const SubmergedTubeSpec& s) {
 
 // The node at a point of the tube's ring y = 0 (the mesh has one there: its corners).
 int nodeAt(const MeshSpec& mesh, const Eigen::Vector3d& x) {
-  int nearest = -1;
-  double distance = 0.0;
-  for (int n = 0; n < mesh.nodeCount(); ++n) {
-    const double d = (mesh.position(n) - x).norm();
-    if (nearest < 0 || d < distance) nearest = n, distance = d;
-  }
+  const auto [nearest, distance] = mesh.nearestNode(x);
   return distance <= mesh.positionTolerance() ? nearest : -1;
 }
 
